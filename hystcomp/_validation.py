@@ -1,0 +1,115 @@
+"""Input checking shared by every public entry point.
+
+Gathered here (as SciPy does) so that the numerical code reads cleanly and
+every error names the argument, the value received and what was expected.
+"""
+
+import numpy as np
+
+__all__ = []
+
+
+def as_signal(x, name="v", min_length=1):
+    """Return `x` as a contiguous 1-D float64 array with finite samples.
+
+    Raises
+    ------
+    ValueError
+        If `x` is not 1-D, too short, or holds NaN or inf (the message names
+        the first offending sample index).
+    """
+    arr = np.ascontiguousarray(np.asarray(x, dtype=np.float64))
+    if arr.ndim == 0:
+        arr = arr.reshape(1)
+    if arr.ndim != 1:
+        raise ValueError(
+            f"Parameter {name} has shape {arr.shape} but should be a 1-D array of samples"
+        )
+    if arr.size < min_length:
+        raise ValueError(
+            f"Parameter {name} has {arr.size} samples but at least {min_length} are needed"
+        )
+    bad = ~np.isfinite(arr)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise ValueError(
+            f"Parameter {name} holds a non-finite value ({arr[k]}) at sample index {k}; "
+            "expected finite numbers"
+        )
+    return arr
+
+
+def as_thresholds(thresholds, name="thresholds", allow_zero=False):
+    """Thresholds r_1 < ... < r_N, all > 0 (or >= 0 when `allow_zero`)."""
+    r = np.ascontiguousarray(np.asarray(thresholds, dtype=np.float64).reshape(-1))
+    if r.size == 0:
+        raise ValueError(f"Parameter {name} is empty; expected at least one threshold")
+    if not np.all(np.isfinite(r)):
+        k = int(np.argmax(~np.isfinite(r)))
+        raise ValueError(f"Parameter {name} holds a non-finite value ({r[k]}) at index {k}")
+    if allow_zero:
+        if r[0] < 0:
+            raise ValueError(f"Parameter {name} starts at {r[0]} but thresholds must be >= 0")
+    elif r[0] <= 0:
+        raise ValueError(
+            f"Parameter {name} starts at {r[0]} but thresholds r_1..r_N must be > 0 "
+            "(the r = 0 operator is weighted by p0, eq. 49)"
+        )
+    d = np.diff(r)
+    if np.any(d <= 0):
+        k = int(np.argmax(d <= 0)) + 1
+        raise ValueError(
+            f"Parameter {name} is not strictly increasing: {name}[{k}] = {r[k]} "
+            f"follows {name}[{k - 1}] = {r[k - 1]}"
+        )
+    return r
+
+
+def as_weights(weights, n, name="weights"):
+    """Weights p_1..p_N: finite, one per threshold."""
+    p = np.ascontiguousarray(np.asarray(weights, dtype=np.float64).reshape(-1))
+    if p.size != n:
+        raise ValueError(
+            f"Parameter {name} has {p.size} entries but there are {n} thresholds; "
+            "expected one weight per threshold"
+        )
+    if not np.all(np.isfinite(p)):
+        k = int(np.argmax(~np.isfinite(p)))
+        raise ValueError(f"Parameter {name} holds a non-finite value ({p[k]}) at index {k}")
+    return p
+
+
+def as_scalar(x, name, positive=False, nonnegative=False):
+    try:
+        val = float(x)
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a real number") from None
+    if not np.isfinite(val):
+        raise ValueError(f"Parameter {name} is {val} but should be finite")
+    if positive and val <= 0:
+        raise ValueError(f"Parameter {name} is {val} but should be > 0")
+    if nonnegative and val < 0:
+        raise ValueError(f"Parameter {name} is {val} but should be >= 0")
+    return val
+
+
+def as_state(state, n, name="initial_state"):
+    """An explicit operator state: a finite 1-D array of length `n` (copied)."""
+    s = np.array(state, dtype=np.float64).reshape(-1)
+    if s.size != n:
+        raise ValueError(
+            f"Parameter {name} has {s.size} entries but this model has {n} states"
+        )
+    if np.isnan(s).any():
+        k = int(np.argmax(np.isnan(s)))
+        raise ValueError(f"Parameter {name} holds NaN at index {k}")
+    return s
+
+
+def check_choice(value, name, choices):
+    if value not in choices:
+        raise ValueError(
+            f"Parameter {name} is {value!r} but should be one of "
+            + ", ".join(repr(c) for c in choices)
+        )
+    return value

@@ -1,0 +1,812 @@
+"""Prandtl-Ishlinskii hysteresis models: PI, stop-type PI, GPI and mGPI.
+
+Notation and equation numbers follow W. Ye, *Inverse Compensation of
+Hysteresis using Modified Generalized Prandtl-Ishlinskii Hysteresis Model*
+(master's thesis; ``shared/seed/mgpi-thesis.txt``):
+
+* PI, eq. 18: ``w = p0 v + sum_i p_i F_{r_i}[v]`` with the play F_r of eq. 12-13;
+* GPI, eq. 21: ``w = H(v) + sum_i p_i F^gamma_{l r_i}[v]`` with the generalized
+  play of eq. 20, ``max{gl(v) - r, min{gr(v) + r, w}}``;
+* mGPI, eq. 25/49: ``w = p0 F^gamma_{m0}[v] + sum_i p_i F^gamma_{m r_i}[v]``
+  with the modified generalized play of eq. 23,
+  ``max{gl(v - r), min{gr(v + r), w}}``.
+
+(The thesis's eqs. 19, 22 and 60 print v(0) where v(t) is meant.)
+
+Every model simulates on an explicit state, like a streaming filter:
+``y, state = model.simulate(v, initial_state=state, return_state=True)``;
+simulating a record in chunks, passing the state on, gives the one-shot
+result bit for bit.  The time loops run compiled (numba) and keep memory
+O(samples + operators).
+"""
+
+import numpy as np
+
+from . import _kernels as _k
+from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
+from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
+
+__all__ = ["HysteresisModel", "PI", "StopPI", "GPI", "MGPI", "Invertibility", "model_from_dict"]
+
+SCHEMA_VERSION = 1
+
+#: samples per block when an envelope has no compiled form
+_BLOCK = 4096
+
+
+class Invertibility:
+    """Answer of ``model.is_invertible()``: truthy when the analytic inverse
+    exists, with the reasons when it does not.
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> check = PI([1.0, 2.0], [-0.5, -0.6], p0=1.0).is_invertible()
+    >>> bool(check)
+    False
+    >>> print(check.reasons[0])
+    the partial sum p0 + p_1 + ... + p_2 = -0.1 is not positive
+    """
+
+    def __init__(self, reasons):
+        self.reasons = list(reasons)
+
+    def __bool__(self):
+        return not self.reasons
+
+    def __repr__(self):
+        if not self.reasons:
+            return "Invertibility(True)"
+        return "Invertibility(False: " + "; ".join(self.reasons) + ")"
+
+
+def _partial_sum_reasons(p0, weights):
+    reasons = []
+    if not p0 > 0:
+        reasons.append(f"p0 = {p0} is not positive")
+    sums = p0 + np.cumsum(weights)
+    bad = np.nonzero(sums <= 0)[0]
+    if bad.size:
+        j = int(bad[0])
+        reasons.append(
+            f"the partial sum p0 + p_1 + ... + p_{j + 1} = {sums[j]:.6g} is not positive"
+        )
+    return reasons
+
+
+class HysteresisModel:
+    """Common interface of the hysteresis models.
+
+    Subclasses implement ``_simulate(v, state)`` (state modified in place)
+    and ``default_state()``.
+    """
+
+    #: number of entries of the explicit state
+    n_states = 0
+
+    def simulate(self, v, initial_state=None, return_state=False):
+        """Output of the model for the input samples `v`.
+
+        Parameters
+        ----------
+        v : array_like, shape (n,)
+            Input samples (finite, inside the envelopes' domains).  Between
+            two samples the input is taken as monotone, so the result does not
+            depend on the sampling rate (rate independence, eq. 14/24).
+        initial_state : array_like, optional
+            State before the first sample, as returned by a previous call with
+            ``return_state=True``; default the virgin state of the thesis
+            (every operator output 0 before t = 0, eq. 12/22).
+        return_state : bool, optional
+            Also return the state after the last sample.
+
+        Returns
+        -------
+        y : ndarray, shape (n,)
+            Output samples.
+        state : ndarray
+            Final state (only if `return_state`).
+        """
+        x = as_signal(v, "v")
+        self._check_input_domain(x)
+        state = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
+        y = self._simulate(x, state)
+        return (y, state) if return_state else y
+
+    def _check_input_domain(self, x):
+        for env in self._envelopes():
+            env.check_domain(x, "v")
+
+    def _envelopes(self):
+        return ()
+
+    def loading_curve(self, r):
+        """Initial loading curve phi(r) (eq. 30 for PI, eq. 37 for mGPI).
+
+        The output when the input rises monotonically from 0 to `r` from the
+        virgin state.  Negative `r` gives the curve for a falling input.
+        """
+        rr = np.asarray(r, dtype=np.float64)
+        flat = rr.reshape(-1)
+        out = np.empty(flat.shape)
+        for j, end in enumerate(flat):
+            out[j] = self.simulate(np.array([0.0, end]))[-1]
+        return float(out[0]) if rr.ndim == 0 else out.reshape(rr.shape)
+
+    def exact_inverse(self, on_unreachable="clip", input_limits=None):
+        """The exact inverse compensator (per-sample monotone solve).
+
+        See :class:`hystcomp.inverses.ExactInverse`.
+        """
+        from .inverses import ExactInverse  # inverses build on models
+
+        return ExactInverse(self, on_unreachable=on_unreachable, input_limits=input_limits)
+
+    def to_json(self):
+        """The model as a JSON string (``to_dict`` serialised)."""
+        import json
+
+        return json.dumps(self.to_dict())
+
+    def __eq__(self, other):
+        return type(self) is type(other) and self._key() == other._key()
+
+    def __hash__(self):
+        return hash(repr(self._key()))
+
+    # operator thresholds and weights shared by the PI family
+    @property
+    def thresholds(self):
+        """Operator thresholds r_1 < ... < r_N (eq. 49)."""
+        return self._r.copy()
+
+    @property
+    def weights(self):
+        """Operator weights p_1..p_N (eq. 49), p0 apart."""
+        return self._p.copy()
+
+    @property
+    def n_operators(self):
+        return self._r.size
+
+
+class MGPI(HysteresisModel):
+    """Modified generalized Prandtl-Ishlinskii model (eq. 25, discrete eq. 49).
+
+    ``w = p0 F^gamma_{m0}[v] + sum_{i=1}^N p_i F^gamma_{m r_i}[v]`` with the
+    modified generalized play ``max{gl(v - r), min{gr(v + r), w}}`` (eq. 23).
+
+    Parameters
+    ----------
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all > 0.
+    weights : array_like, shape (N,)
+        p_1..p_N (negative values are legal: inverses have them).
+    p0 : float
+        Weight of the r = 0 operator.
+    envelope : Envelope, optional
+        Sets both envelopes (gl = gr); default :class:`~hystcomp.envelopes.Identity`,
+        with which the model is the classical PI model.
+    envelope_left, envelope_right : Envelope, optional
+        gl and gr apart (asymmetric hysteresis).
+
+    Notes
+    -----
+    With one envelope, gamma commutes with max and min, so
+    ``F^gamma_{mr}[v] = gamma(F_r[v])``: the state is then the classical play
+    positions z_i (input coordinates) and gamma is evaluated only for
+    operators that move.  With two envelopes the state is the operator
+    outputs w_0..w_N (w_0 of the r = 0 operator, which has memory when
+    gl != gr).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import MGPI
+    >>> from hystcomp.envelopes import Tanh
+    >>> r = 0.5 * np.arange(1, 21)
+    >>> model = MGPI.from_density(lambda r: np.exp(-0.1 * r), r, p0=1.0,
+    ...                           envelope=Tanh(10.0, 0.2))
+    >>> t = np.linspace(0, 10, 2001)
+    >>> y = model.simulate(10 * np.sin(2 * np.pi * t) + t)
+    >>> bool(y.max() < model.output_bounds()[1])
+    True
+    """
+
+    _type = "MGPI"
+
+    def __init__(self, thresholds, weights, p0, envelope=None, envelope_left=None, envelope_right=None):
+        self._r = as_thresholds(thresholds)
+        self._p = as_weights(weights, self._r.size)
+        self.p0 = as_scalar(p0, "p0")
+        if envelope is not None and (envelope_left is not None or envelope_right is not None):
+            raise ValueError(
+                "Parameter envelope sets both sides; pass either envelope or "
+                "envelope_left/envelope_right, not both"
+            )
+        if (envelope_left is None) != (envelope_right is None):
+            raise ValueError(
+                "Parameters envelope_left and envelope_right go together; pass both "
+                "or pass envelope for a symmetric model"
+            )
+        if envelope is None and envelope_left is None:
+            envelope = Identity()
+        gl = envelope if envelope is not None else envelope_left
+        gr = envelope if envelope is not None else envelope_right
+        for name, g in (("envelope_left", gl), ("envelope_right", gr)):
+            if not isinstance(g, Envelope):
+                raise TypeError(f"Parameter {name} is {g!r} but should be an hystcomp Envelope")
+        self.envelope_left = gl
+        self.envelope_right = gr
+        self.symmetric = gl == gr
+        if self.symmetric:
+            self.envelope_right = gl
+            self.n_states = self._r.size
+        else:
+            self.n_states = self._r.size + 1
+
+    @property
+    def envelope(self):
+        """The envelope gamma when gl = gr, else None."""
+        return self.envelope_left if self.symmetric else None
+
+    @classmethod
+    def from_density(cls, density, thresholds, p0, **envelopes):
+        """Discretise a density p(r) as the thesis does (eq. 49, section 5.1):
+
+        p_i = p(r_i) (r_i - r_{i-1}), r_0 = 0.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> m = MGPI.from_density(lambda r: np.exp(-0.1 * r), [0.5, 1.0], p0=1.0)
+        >>> m.weights.round(6).tolist()
+        [0.475615, 0.452419]
+        """
+        r = as_thresholds(thresholds)
+        dens = np.asarray(density(r), dtype=np.float64) if callable(density) else np.asarray(density, dtype=np.float64)
+        if dens.shape != r.shape:
+            raise ValueError(
+                f"Parameter density gives {dens.shape} values but there are {r.size} thresholds"
+            )
+        return cls(r, dens * np.diff(np.concatenate([[0.0], r])), p0, **envelopes)
+
+    def _envelopes(self):
+        return (self.envelope_left,) if self.symmetric else (self.envelope_left, self.envelope_right)
+
+    def default_state(self):
+        """Virgin state: every operator output 0 before the first sample."""
+        if self.symmetric:
+            g = self.envelope_left
+            lo, hi = g.range
+            if lo < 0.0 < hi:
+                z0 = g._inverse(np.array([0.0]))[0]
+            else:
+                z0 = -np.inf if hi <= 0.0 else np.inf
+            return np.full(self._r.size, z0)
+        return np.zeros(self._r.size + 1)
+
+    def operator_outputs(self, state):
+        """Operator outputs w_i for a state (for symmetric models w_i = gamma(z_i))."""
+        s = as_state(state, self.n_states, "state")
+        if self.symmetric:
+            return _extended(self.envelope_left, s)
+        return s
+
+    def _simulate(self, x, state):
+        y = np.empty(x.size)
+        if self.symmetric:
+            kind, prm = self.envelope_left.kernel_spec()
+            if kind != _k.CUSTOM:
+                _k.play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
+                return y
+            g = self.envelope_left
+            block = np.empty((min(_BLOCK, x.size), self._r.size))
+            for s in range(0, x.size, _BLOCK):
+                xs = x[s:s + _BLOCK]
+                zs = block[: xs.size]
+                _k.play_states(xs, self._r, state, zs)
+                y[s:s + xs.size] = self.p0 * g._value(xs) + _extended(g, zs) @ self._p
+            return y
+        r_all = np.concatenate([[0.0], self._r])
+        p_all = np.concatenate([[self.p0], self._p])
+        kl, pl = self.envelope_left.kernel_spec()
+        kr, pr = self.envelope_right.kernel_spec()
+        if kl != _k.CUSTOM and kr != _k.CUSTOM:
+            _k.mplay_sum(x, r_all, p_all, state, kl, pl, kr, pr, y)
+            return y
+        block = np.empty((min(_BLOCK, x.size), r_all.size))
+        for s in range(0, x.size, _BLOCK):
+            xs = x[s:s + _BLOCK]
+            lower = _extended(self.envelope_left, xs[:, None] - r_all[None, :])
+            upper = _extended(self.envelope_right, xs[:, None] + r_all[None, :])
+            ws = block[: xs.size]
+            _k.bounded_play_states(lower, upper, state, ws)
+            y[s:s + xs.size] = ws @ p_all
+        return y
+
+    def operator_responses(self, v, initial_state=None):
+        """Outputs of every operator, shape (n, N+1): column 0 is the r = 0
+        operator, column i the operator of threshold r_i (for figures)."""
+        from .operators import modified_play
+
+        x = as_signal(v, "v")
+        self._check_input_domain(x)
+        r_all = np.concatenate([[0.0], self._r])
+        state = None
+        if initial_state is not None:
+            w = self.operator_outputs(initial_state)
+            state = np.concatenate([[0.0], w]) if self.symmetric else w
+        out, _ = modified_play(x, r_all, self.envelope_left, self.envelope_right, state=state, _allow_zero=True)
+        return out
+
+    def loading_curve(self, r):
+        """Initial loading curve (eq. 37): phi(r) = p0 gamma(r) + sum_{r_i < r} p_i gamma(r - r_i)
+        for gamma(0) = 0, evaluated exactly from the operator definition."""
+        return super().loading_curve(r)
+
+    def output_bounds(self):
+        """(lower, upper) bounds of the output for any input (eq. 29).
+
+        Each modified play stays between the envelopes' infimum and supremum
+        (and its initial value 0), so the output stays within
+        ``sum_i |p_i| * U`` taken sign by sign; eq. 29's
+        ``Q = U (p0 + sum p_i)`` for positive weights.  Infinite for
+        unbounded envelopes.
+        """
+        lo = min(self.envelope_left.range[0], self.envelope_right.range[0], 0.0)
+        hi = max(self.envelope_left.range[1], self.envelope_right.range[1], 0.0)
+        p_all = np.concatenate([[self.p0], self._p])
+        return _weighted_bounds(p_all, lo, hi)
+
+    def is_invertible(self):
+        """Whether the thesis's analytic inverse (section 4.3) exists, and why not.
+
+        Needs p0 > 0, all partial sums p0 + p_1 + ... + p_j > 0, gl = gr and
+        beta'(0) = 1/gamma'(gamma^-1(0)) finite and non-zero.
+        """
+        reasons = _partial_sum_reasons(self.p0, self._p)
+        reasons += self._recipe_reasons()
+        return Invertibility(reasons)
+
+    def _recipe_reasons(self):
+        reasons = []
+        if not self.symmetric:
+            reasons.append(
+                "the envelopes differ (gl != gr): the thesis's recipe (eqs. 54-58) needs "
+                "one envelope; use model.exact_inverse()"
+            )
+            return reasons
+        g = self.envelope_left
+        try:
+            dg0 = float(g.derivative(0.0))
+            g0 = float(g(0.0))
+        except ValueError:
+            return ["0 is outside the envelope's domain; use model.exact_inverse()"]
+        if g0 != 0.0:
+            reasons.append(
+                f"gamma(0) = {g0} is not 0 (eq. 40 assumes gamma(0) = 0); use model.exact_inverse()"
+            )
+        if not np.isfinite(dg0) or dg0 == 0.0:
+            reasons.append(
+                f"beta'(0) = 1/gamma'(0) is {'0' if not np.isfinite(dg0) else 'infinite'} "
+                "(as for gamma = v^3: eq. 58 divides by beta'(0), the thesis's section 6.2 "
+                "leaves this open); use model.exact_inverse()"
+            )
+        return reasons
+
+    def inverse(self):
+        """The analytic inverse by the thesis's recipe (section 4.3, eqs. 54-58).
+
+        Returns the mGPI model with thresholds q_j (eq. 56), weights g(q_j)
+        (eq. 58, read with g_j, not q_j, in eq. 57's last term), p0 = g0 = 1/p0
+        (eq. 54) and envelope beta = gamma^-1 (eq. 55).  Exact for linear
+        envelopes; for nonlinear ones an approximation (see
+        :func:`hystcomp.inverses.compensation_error`).
+
+        Raises
+        ------
+        ValueError
+            Where the recipe does not apply (gl != gr, beta'(0) = 0, ...),
+            naming the reason and pointing to :meth:`exact_inverse`.
+        """
+        from .inverses import mgpi_inverse_parameters
+
+        check = self.is_invertible()
+        if not check:
+            raise ValueError(
+                "The analytic inverse of this model does not exist: " + "; ".join(check.reasons)
+            )
+        q, g, g0 = mgpi_inverse_parameters(self._r, self._p, self.p0, self.envelope_left)
+        return MGPI(q, g, g0, envelope=self.envelope_left.inverse_envelope())
+
+    def _key(self):
+        return (tuple(self._r), tuple(self._p), self.p0, self.envelope_left, self.envelope_right)
+
+    def to_dict(self):
+        """JSON-safe description with a schema version (exact round trip)."""
+        d = {
+            "schema_version": SCHEMA_VERSION,
+            "model": self._type,
+            "thresholds": self._r.tolist(),
+            "weights": self._p.tolist(),
+            "p0": self.p0,
+        }
+        if self.symmetric:
+            d["envelope"] = self.envelope_left.to_dict()
+        else:
+            d["envelope_left"] = self.envelope_left.to_dict()
+            d["envelope_right"] = self.envelope_right.to_dict()
+        return d
+
+    @classmethod
+    def _from_dict(cls, d):
+        if "envelope" in d:
+            return cls(d["thresholds"], d["weights"], d["p0"], envelope=envelope_from_dict(d["envelope"]))
+        return cls(d["thresholds"], d["weights"], d["p0"],
+                   envelope_left=envelope_from_dict(d["envelope_left"]),
+                   envelope_right=envelope_from_dict(d["envelope_right"]))
+
+    from_dict = classmethod(lambda cls, d: model_from_dict(d, expected=cls))
+
+    def __repr__(self):
+        env = (f"envelope={self.envelope_left!r}" if self.symmetric else
+               f"envelope_left={self.envelope_left!r}, envelope_right={self.envelope_right!r}")
+        return f"{type(self).__name__}(N={self._r.size}, p0={self.p0!r}, {env})"
+
+
+class PI(MGPI):
+    """Classical play-type Prandtl-Ishlinskii model (eq. 18, discrete form).
+
+    ``w = p0 v + sum_{i=1}^N p_i F_{r_i}[v]`` with the play
+    ``f_r(v, w) = max{v - r, min{v + r, w}}`` (eq. 13).  The state is the
+    play outputs.  An MGPI model with the identity envelope.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> model = PI([1.0, 2.0, 3.0], [0.5, 0.3, 0.2], p0=1.0)
+    >>> inv = model.inverse()                      # Krejci-Kuhnen
+    >>> u = 4 * np.sin(np.linspace(0, 20, 500))
+    >>> bool(np.allclose(model.simulate(inv.simulate(u)), u, atol=1e-12))
+    True
+    """
+
+    _type = "PI"
+
+    def __init__(self, thresholds, weights, p0):
+        super().__init__(thresholds, weights, p0)
+
+    def loading_curve(self, r):
+        """phi(r) = p0 r + sum_i p_i max(r - r_i, 0) for r >= 0 (eq. 30)."""
+        rr = np.asarray(r, dtype=np.float64)
+        a = np.abs(rr)[..., None]
+        val = self.p0 * np.abs(rr) + (np.maximum(a - self._r, 0.0) * self._p).sum(axis=-1)
+        val = np.sign(rr) * val
+        return float(val) if rr.ndim == 0 else val
+
+    @classmethod
+    def from_loading_curve(cls, phi, thresholds):
+        """Recover p0 = phi'(0) and p_i = jump of phi' at r_i (eqs. 31-32).
+
+        `phi` is a callable (the loading curve).  For a PI model the curve is
+        piecewise linear with kinks at the thresholds, so the recovery is
+        exact; for a smooth curve it discretises p(r) = phi''(r).
+
+        Examples
+        --------
+        >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+        >>> rec = PI.from_loading_curve(m.loading_curve, [1.0, 2.0])
+        >>> rec.p0, rec.weights.tolist()
+        (1.0, [0.5, 0.25])
+        """
+        r = as_thresholds(thresholds)
+        h = r[-1] - r[-2] if r.size > 1 else r[-1]
+        pts = np.concatenate([[0.0], r, [r[-1] + h]])
+        vals = np.array([float(phi(x)) for x in pts])
+        slopes = np.diff(vals) / np.diff(pts)
+        p0 = slopes[0]
+        p = np.diff(slopes)
+        return cls(r, p, p0)
+
+    def inverse(self):
+        """Krejci-Kuhnen analytic inverse: again a PI model.
+
+        Thresholds q_j = phi(r_j) (the loading curve, eq. 56 with gamma = v),
+        weights g_j = 1/(p0 + p_1 + ... + p_j) - 1/(p0 + ... + p_{j-1}),
+        p0' = 1/p0.  Exact: ``inverse.simulate(model.simulate(v)) == v`` up to
+        rounding.  Map a non-zero initial state with :meth:`inverse_state`.
+        """
+        check = Invertibility(_partial_sum_reasons(self.p0, self._p))
+        if not check:
+            raise ValueError("The PI model is not invertible: " + "; ".join(check.reasons))
+        sums = self.p0 + np.concatenate([[0.0], np.cumsum(self._p)])
+        q = self.loading_curve(self._r)
+        g = 1.0 / sums[1:] - 1.0 / sums[:-1]
+        return PI(q, g, 1.0 / self.p0)
+
+    def is_invertible(self):
+        """p0 > 0 and all partial sums p0 + p_1 + ... + p_j > 0."""
+        return Invertibility(_partial_sum_reasons(self.p0, self._p))
+
+    def inverse_state(self, state):
+        """Initial state of :meth:`inverse` matching a state of this model.
+
+        For play outputs z_i of the model, the inverse's plays start at
+        ``z'_j = (p0 + p_1 + ... + p_j) z_j + sum_{i > j} p_i z_i``, so that
+        ``inverse.simulate(model.simulate(v, s), inverse_state(s)) == v``.
+        """
+        z = as_state(state, self.n_states, "state")
+        head = (self.p0 + np.cumsum(self._p)) * z
+        tail = np.concatenate([np.cumsum((self._p * z)[::-1])[::-1][1:], [0.0]])
+        return head + tail
+
+    def to_dict(self):
+        d = super().to_dict()
+        d.pop("envelope", None)
+        return d
+
+    @classmethod
+    def _from_dict(cls, d):
+        return cls(d["thresholds"], d["weights"], d["p0"])
+
+    def __repr__(self):
+        return f"PI(N={self._r.size}, p0={self.p0!r})"
+
+
+class StopPI(HysteresisModel):
+    """Stop-type Prandtl-Ishlinskii model: ``w = p0 v + sum_i p_i E_{r_i}[v]``.
+
+    The stop E_r of eq. 15-16 (elastic-plastic element): state is the stop
+    outputs and the last input, ``[e_1, ..., e_N, v_prev]``.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> m = StopPI([1.0, 2.0], [1.0, 0.5])
+    >>> m.simulate([0.0, 1.5, 3.0, 0.0]).tolist()
+    [0.0, 1.75, 2.0, -1.5]
+    """
+
+    _type = "StopPI"
+
+    def __init__(self, thresholds, weights, p0=0.0):
+        self._r = as_thresholds(thresholds)
+        self._p = as_weights(weights, self._r.size)
+        self.p0 = as_scalar(p0, "p0")
+        self.n_states = self._r.size + 1
+
+    def default_state(self):
+        return np.zeros(self.n_states)
+
+    def _simulate(self, x, state):
+        y = np.empty(x.size)
+        w = state[:-1].copy()
+        state[-1] = _k.stop_sum(x, self._r, self._p, self.p0, w, state[-1], y)
+        state[:-1] = w
+        return y
+
+    def output_bounds(self):
+        """Bounded only if p0 = 0: then |w| <= sum_i |p_i| r_i."""
+        if self.p0 != 0.0:
+            return (-np.inf, np.inf)
+        b = float(np.sum(np.abs(self._p) * self._r))
+        return (-b, b)
+
+    def is_invertible(self):
+        reasons = []
+        if not self.p0 > 0:
+            reasons.append(f"p0 = {self.p0} is not positive (a stop-type model saturates)")
+        if np.any(self._p < 0):
+            reasons.append("negative weights")
+        return Invertibility(reasons)
+
+    def _key(self):
+        return (tuple(self._r), tuple(self._p), self.p0)
+
+    def to_dict(self):
+        return {"schema_version": SCHEMA_VERSION, "model": self._type,
+                "thresholds": self._r.tolist(), "weights": self._p.tolist(), "p0": self.p0}
+
+    @classmethod
+    def _from_dict(cls, d):
+        return cls(d["thresholds"], d["weights"], d["p0"])
+
+    from_dict = classmethod(lambda cls, d: model_from_dict(d, expected=cls))
+
+    def __repr__(self):
+        return f"StopPI(N={self._r.size}, p0={self.p0!r})"
+
+
+class GPI(HysteresisModel):
+    """Generalized Prandtl-Ishlinskii model (eq. 21, Al Janaideh et al.).
+
+    ``w = H(v) + sum_i p_i F^gamma_{l r_i}[v]`` with the generalized play
+    ``max{gl(v) - r, min{gr(v) + r, w}}`` (eq. 20).
+
+    Parameters
+    ----------
+    thresholds, weights : array_like, shape (N,)
+        r_1 < ... < r_N (> 0) and p_1..p_N.
+    envelope_left, envelope_right : Envelope
+        gl and gr.
+    H : None, float or Envelope, optional
+        The memoryless term: None for H = 0, a number k for H(v) = k v, or an
+        increasing :class:`~hystcomp.envelopes.Envelope` (e.g. ``p0 * gamma``
+        as ``Tanh(p0 * a, b)``).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import GPI
+    >>> from hystcomp.envelopes import Tanh
+    >>> gpi = GPI([10.0], [1.0], Tanh(10, 0.2), Tanh(10, 0.1))
+    >>> t = np.linspace(0, 10, 1001)
+    >>> float(np.abs(gpi.simulate(10 * np.sin(2 * np.pi * t) + t)).max())  # never moves
+    0.0
+    """
+
+    _type = "GPI"
+
+    def __init__(self, thresholds, weights, envelope_left, envelope_right, H=None):
+        self._r = as_thresholds(thresholds)
+        self._p = as_weights(weights, self._r.size)
+        for name, g in (("envelope_left", envelope_left), ("envelope_right", envelope_right)):
+            if not isinstance(g, Envelope):
+                raise TypeError(f"Parameter {name} is {g!r} but should be an hystcomp Envelope")
+        self.envelope_left = envelope_left
+        self.envelope_right = envelope_right
+        if H is None or isinstance(H, Envelope):
+            self.H = H
+        else:
+            k = as_scalar(H, "H", nonnegative=True)
+            self.H = Linear(k) if k > 0 else None
+        self.n_states = self._r.size
+
+    def _envelopes(self):
+        envs = [self.envelope_left, self.envelope_right]
+        if self.H is not None:
+            envs.append(self.H)
+        return tuple(envs)
+
+    def default_state(self):
+        return np.zeros(self._r.size)
+
+    def _simulate(self, x, state):
+        a = self.envelope_left._value(x)
+        b = self.envelope_right._value(x)
+        y = np.empty(x.size)
+        _k.two_input_play_sum(a, b, self._r, self._p, state, y)
+        if self.H is not None:
+            y += self.H._value(x)
+        return y
+
+    def output_bounds(self):
+        """Each generalized play lies in [inf gl - r, sup gr + r] (and 0)."""
+        lo = np.minimum(self.envelope_left.range[0] - self._r, 0.0)
+        hi = np.maximum(self.envelope_right.range[1] + self._r, 0.0)
+        pos = self._p > 0
+        upper = np.sum(np.where(pos, self._p * hi, self._p * lo))
+        lower = np.sum(np.where(pos, self._p * lo, self._p * hi))
+        if self.H is not None:
+            lower += self.H.range[0]
+            upper += self.H.range[1]
+        return (float(lower), float(upper))
+
+    def _cascade_gain(self):
+        """k if gl = gr = gamma and H = k gamma (numerically checked), else None."""
+        if self.envelope_left != self.envelope_right or self.H is None:
+            return None
+        g = self.envelope_left
+        lo, hi = g.domain
+        lo = max(lo, -10.0) if np.isfinite(lo) else -10.0
+        hi = min(hi, 10.0) if np.isfinite(hi) else 10.0
+        x = np.linspace(lo, hi, 41)[1:-1]
+        gx, hx = g._value(x), self.H._value(x)
+        nz = np.abs(gx) > 1e-12
+        if not nz.any() or np.any(np.abs(hx[~nz]) > 1e-12):
+            return None
+        ratios = hx[nz] / gx[nz]
+        k = float(np.median(ratios))
+        if k > 0 and np.allclose(ratios, k, rtol=1e-10, atol=0):
+            return k
+        return None
+
+    def is_invertible(self):
+        """The analytic inverse needs gl = gr = gamma and H = k gamma with
+        k > 0 (the GPI is then the PI model applied to gamma(v)) and positive
+        partial sums."""
+        reasons = []
+        k = self._cascade_gain()
+        if k is None:
+            reasons.append(
+                "the analytic inverse needs gl = gr = gamma and H = k*gamma (the GPI is then "
+                "a PI model of gamma(v)); use model.exact_inverse()"
+            )
+            return Invertibility(reasons)
+        return Invertibility(_partial_sum_reasons(k, self._p))
+
+    def inverse(self):
+        """Analytic inverse (Al Janaideh et al.): ``gamma^-1 o PI^-1``.
+
+        With gl = gr = gamma and H = k gamma, ``GPI[v] = PI[gamma(v)]`` for the
+        PI model with p0 = k and the same thresholds and weights, so the
+        inverse is the Krejci-Kuhnen inverse followed by gamma^-1.
+        """
+        from .inverses import GPIInverse
+
+        check = self.is_invertible()
+        if not check:
+            raise ValueError("The analytic inverse of this GPI model does not exist: " + "; ".join(check.reasons))
+        return GPIInverse(self)
+
+    def as_pi(self):
+        """The PI model P with ``GPI[v] = P[gamma(v)]`` (needs gl = gr, H = k gamma)."""
+        k = self._cascade_gain()
+        if k is None:
+            raise ValueError("This GPI model is not a PI model of gamma(v): " + self.is_invertible().reasons[0])
+        return PI(self._r, self._p, k)
+
+    def _key(self):
+        return (tuple(self._r), tuple(self._p), self.envelope_left, self.envelope_right, self.H)
+
+    def to_dict(self):
+        return {"schema_version": SCHEMA_VERSION, "model": self._type,
+                "thresholds": self._r.tolist(), "weights": self._p.tolist(),
+                "envelope_left": self.envelope_left.to_dict(),
+                "envelope_right": self.envelope_right.to_dict(),
+                "H": None if self.H is None else self.H.to_dict()}
+
+    @classmethod
+    def _from_dict(cls, d):
+        H = d.get("H")
+        return cls(d["thresholds"], d["weights"], envelope_from_dict(d["envelope_left"]),
+                   envelope_from_dict(d["envelope_right"]), H=None if H is None else envelope_from_dict(H))
+
+    from_dict = classmethod(lambda cls, d: model_from_dict(d, expected=cls))
+
+    def __repr__(self):
+        return (f"GPI(N={self._r.size}, envelope_left={self.envelope_left!r}, "
+                f"envelope_right={self.envelope_right!r}, H={self.H!r})")
+
+
+def _weighted_bounds(p, lo, hi):
+    pos = p > 0
+    with np.errstate(invalid="ignore"):
+        upper = np.sum(np.where(pos, p * hi, np.where(p < 0, p * lo, 0.0)))
+        lower = np.sum(np.where(pos, p * lo, np.where(p < 0, p * hi, 0.0)))
+    return (float(lower), float(upper))
+
+
+_MODELS = {"PI": PI, "MGPI": MGPI, "GPI": GPI, "StopPI": StopPI}
+
+
+def model_from_dict(d, expected=None):
+    """Rebuild a model written by ``model.to_dict()``.
+
+    Examples
+    --------
+    >>> from hystcomp import PI, model_from_dict
+    >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+    >>> model_from_dict(m.to_dict()) == m
+    True
+    """
+    if isinstance(d, str):
+        import json
+
+        d = json.loads(d)
+    if not isinstance(d, dict) or "model" not in d:
+        raise ValueError(f"Model description should be a dict with a 'model' key, got {type(d).__name__}")
+    version = d.get("schema_version")
+    if version != SCHEMA_VERSION:
+        raise ValueError(
+            f"Model description has schema_version {version!r}; this hystcomp reads version {SCHEMA_VERSION}"
+        )
+    try:
+        cls = _MODELS[d["model"]]
+    except KeyError:
+        raise ValueError(f"Model type {d['model']!r} is unknown; expected one of {sorted(_MODELS)}") from None
+    if expected is not None and not issubclass(cls, expected):
+        raise ValueError(f"Description is of a {d['model']} model, not {expected.__name__}")
+    return cls._from_dict(d)
