@@ -17,7 +17,7 @@ Examples
 >>> from hystcomp.envelopes import Tanh
 >>> g = Tanh(10.0, 0.2)
 >>> float(g(1.0))
-1.9737532022490403
+1.97375320224904
 >>> float(g.inverse(g(1.0)))
 1.0
 """
