@@ -9,6 +9,13 @@ Envelopes inside kernels are a kind code and a parameter array (see
 inline.  Outside its domain an envelope counts as -inf (below) or +inf
 (above), so an operator boundary that leaves the domain never binds.
 
+Speed (see benchmarks/bench_models.py): inner loops evaluate built-in
+envelopes inline (`_fval`, `_fval_der`) and the hot kernels are compiled
+once per envelope kind (a constant kind removes the dispatch from the loop).
+Every fast path performs the same floating-point operations in the same
+order as the plain formulas, so results do not depend on the path taken
+(and chunked runs equal one-shot runs bit for bit).  No fastmath.
+
 Operator families, all of the form ``w <- max(L(v), min(U(v), w))``:
 
 * play (eq. 13): ``L = v - r``, ``U = v + r``;
@@ -186,6 +193,79 @@ def env_inverse(kind, prm, y):
     return _base_inverse(kind, prm, y)
 
 
+# Fast paths.  Dispatching through env_value (a call that takes the
+# parameter array) costs ~20 ns per evaluation here, more than the envelope
+# itself, and an opaque call in a loop blocks the compiler's optimisations;
+# so the kernels' inner loops use these versions, which take the first three
+# parameters as scalars (see `_prm3`) and compute the built-in closed forms
+# with exactly the same floating-point operations as `_base_value` /
+# `_val_der` (so results are bit-identical); only Polynomial and Inverse
+# reach the general code, and only in loops compiled with gen=True.
+# (They are small enough for LLVM to inline; numba-level inline="always"
+# here made the first compilation 6x slower.)
+@njit(cache=True, inline="always")
+def _prm3(prm):
+    a = prm[0] if prm.size > 0 else 0.0
+    b = prm[1] if prm.size > 1 else 0.0
+    c = prm[2] if prm.size > 2 else 0.0
+    return a, b, c
+
+
+@njit(cache=True)
+def _fval(kind, prm, a, b, c, x, gen):
+    """env_value(kind, prm, x) with (a, b, c) = _prm3(prm).  `gen` False
+    promises a built-in closed-form kind (Identity, Linear, Tanh, Atanh): the
+    general fallback is then compiled out of the caller's loop."""
+    if kind == TANH:
+        return a * _tanh(b * x + c)
+    if kind == IDENTITY:
+        return x
+    if kind == LINEAR:
+        return a * x
+    if kind == ATANH:
+        u = b * x
+        if u >= 1.0:
+            return _INF
+        if u <= -1.0:
+            return -_INF
+        return a * math.atanh(u) + c
+    if gen:
+        return _slow_value(kind, prm, x)
+    return np.nan
+
+
+@njit(cache=True)
+def _fval_der(kind, prm, a, b, c, x, gen):
+    """_val_der(kind, prm, x) with (a, b, c) = _prm3(prm); `gen` as in `_fval`."""
+    if kind == TANH:
+        t = _tanh(b * x + c)
+        return a * t, a * b * (1.0 - t * t)
+    if kind == IDENTITY:
+        return x, 1.0
+    if kind == LINEAR:
+        return a * x, a
+    if kind == ATANH:
+        u = b * x
+        if u >= 1.0:
+            return _INF, _INF
+        if u <= -1.0:
+            return -_INF, _INF
+        return a * math.atanh(u) + c, a * b / (1.0 - u * u)
+    if gen:
+        return _slow_val_der(kind, prm, x)
+    return np.nan, np.nan
+
+
+@njit(cache=True)
+def _slow_value(kind, prm, x):
+    return env_value(kind, prm, x)
+
+
+@njit(cache=True)
+def _slow_val_der(kind, prm, x):
+    return env_value(kind, prm, x), env_derivative(kind, prm, x)
+
+
 # ----------------------------------------------------------------------------
 # forward kernels
 # ----------------------------------------------------------------------------
@@ -213,9 +293,24 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
                 s += p[i] * zi
             out[k] = scale * (p0 * x + s)
         return
+    # two compiled copies: built-in closed forms (no general fallback in the
+    # loop) and the rest
+    if kind == TANH or kind == ATANH:
+        _play_sum_env(v, r, p, p0, z, kind, prm, out, False)
+    else:
+        _play_sum_env(v, r, p, p0, z, kind, prm, out, True)
+
+
+@njit(cache=True, inline="always")
+def _play_sum_env(v, r, p, p0, z, kind, prm, out, gen):
+    """`play_sum` with an envelope: g = gamma(z) is kept per operator and
+    re-evaluated only for the operators that move."""
+    n = v.size
+    N = r.size
+    a, b, c = _prm3(prm)
     g = np.empty(N)
     for i in range(N):
-        g[i] = env_value(kind, prm, z[i])
+        g[i] = _fval(kind, prm, a, b, c, z[i], gen)
     for k in range(n):
         x = v[k]
         s = 0.0
@@ -225,12 +320,12 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
             hi = x + r[i]
             if zi < lo:
                 z[i] = lo
-                g[i] = env_value(kind, prm, lo)
+                g[i] = _fval(kind, prm, a, b, c, lo, gen)
             elif zi > hi:
                 z[i] = hi
-                g[i] = env_value(kind, prm, hi)
+                g[i] = _fval(kind, prm, a, b, c, hi, gen)
             s += p[i] * g[i]
-        out[k] = p0 * env_value(kind, prm, x) + s
+        out[k] = p0 * _fval(kind, prm, a, b, c, x, gen) + s
 
 
 @njit(cache=True)
@@ -293,11 +388,11 @@ def two_input_play_states(a, b, r, w, out):
 
 
 @njit(cache=True, inline="always")
-def _mplay(x, ri, wi, kl, pl, kr, pr):
-    hi = env_value(kr, pr, x + ri)
+def _fmplay(x, ri, wi, kl, pl, al, bl, cl, kr, pr, ar, br, cr, gen):
+    hi = _fval(kr, pr, ar, br, cr, x + ri, gen)
     if wi > hi:
         wi = hi
-    lo = env_value(kl, pl, x - ri)
+    lo = _fval(kl, pl, al, bl, cl, x - ri, gen)
     if wi < lo:
         wi = lo
     return wi
@@ -310,13 +405,24 @@ def mplay_sum(v, r, p, w, kl, pl, kr, pr, out):
     ``w_i <- max(gl(v - r_i), min(gr(v + r_i), w_i))``; `r` includes the
     r = 0 operator of p0 (eq. 25).  ``out = sum_i p_i w_i``.
     """
+    # two compiled copies: built-in closed forms and the rest (see play_sum)
+    if IDENTITY <= kl <= ATANH and IDENTITY <= kr <= ATANH:
+        _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, False)
+    else:
+        _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, True)
+
+
+@njit(cache=True, inline="always")
+def _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, gen):
     n = v.size
     N = r.size
+    al, bl, cl = _prm3(pl)
+    ar, br, cr = _prm3(pr)
     for k in range(n):
         x = v[k]
         s = 0.0
         for i in range(N):
-            wi = _mplay(x, r[i], w[i], kl, pl, kr, pr)
+            wi = _fmplay(x, r[i], w[i], kl, pl, al, bl, cl, kr, pr, ar, br, cr, gen)
             w[i] = wi
             s += p[i] * wi
         out[k] = s
@@ -326,10 +432,12 @@ def mplay_sum(v, r, p, w, kl, pl, kr, pr, out):
 def mplay_states(v, r, w, kl, pl, kr, pr, out):
     n = v.size
     N = r.size
+    al, bl, cl = _prm3(pl)
+    ar, br, cr = _prm3(pr)
     for k in range(n):
         x = v[k]
         for i in range(N):
-            wi = _mplay(x, r[i], w[i], kl, pl, kr, pr)
+            wi = _fmplay(x, r[i], w[i], kl, pl, al, bl, cl, kr, pr, ar, br, cr, True)
             w[i] = wi
             out[k, i] = wi
 
@@ -404,45 +512,21 @@ FAM_STOP = 3    # stops; state w, memoryless p0 x
 
 @njit(cache=True, inline="always")
 def _val_der(kind, prm, x):
-    if kind == TANH:
-        t = _tanh(prm[1] * x + prm[2])
-        return prm[0] * t, prm[0] * prm[1] * (1.0 - t * t)
-    return env_value(kind, prm, x), env_derivative(kind, prm, x)
+    a, b, c = _prm3(prm)
+    return _fval_der(kind, prm, a, b, c, x, True)
 
 
 @njit(cache=True)
-def _output_and_slopes(fam, x, xprev, r, p, p0, state, cache,
+def _output_and_slopes(fam, x, xprev, r, p, p0, state,
                        kl, pl, kr, pr, kh, ph, hscale):
     """Model output for a new input x from the current state, with the
-    right and left derivatives (the state is not changed)."""
+    right and left derivatives (the state is not changed).  Families
+    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: `_play_eval`)."""
     N = r.size
     y = 0.0
     sr = 0.0
     sl = 0.0
-    if fam == FAM_PLAY:
-        g, dg = _val_der(kl, pl, x)
-        y = p0 * g
-        sr = p0 * dg
-        sl = sr
-        for i in range(N):
-            zi = state[i]
-            lo = x - r[i]
-            hi = x + r[i]
-            if zi <= lo:
-                gi, di = _val_der(kl, pl, lo)
-                y += p[i] * gi
-                sr += p[i] * di
-                if zi < lo:
-                    sl += p[i] * di
-            elif zi >= hi:
-                gi, di = _val_der(kl, pl, hi)
-                y += p[i] * gi
-                sl += p[i] * di
-                if zi > hi:
-                    sr += p[i] * di
-            else:
-                y += p[i] * cache[i]
-    elif fam == FAM_MPLAY:
+    if fam == FAM_MPLAY:
         for i in range(N):
             wi = state[i]
             lo, dlo = _val_der(kl, pl, x - r[i])
@@ -501,26 +585,20 @@ def _output_and_slopes(fam, x, xprev, r, p, p0, state, cache,
 
 
 @njit(cache=True)
-def _advance(fam, x, xprev, r, state, cache, kl, pl, kr, pr):
-    """Update the state for the new input x (the forward step)."""
+def _advance(fam, x, xprev, r, state, kl, pl, kr, pr):
+    """Update the state for the new input x (the forward step); families
+    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: in `_play_solve_body`)."""
     N = r.size
-    if fam == FAM_PLAY:
+    if fam == FAM_MPLAY:
+        al, bl, cl = _prm3(pl)
+        ar, br, cr = _prm3(pr)
         for i in range(N):
-            zi = state[i]
-            lo = x - r[i]
-            hi = x + r[i]
-            if zi < lo:
-                state[i] = lo
-                cache[i] = env_value(kl, pl, lo)
-            elif zi > hi:
-                state[i] = hi
-                cache[i] = env_value(kl, pl, hi)
-    elif fam == FAM_MPLAY:
-        for i in range(N):
-            state[i] = _mplay(x, r[i], state[i], kl, pl, kr, pr)
+            state[i] = _fmplay(x, r[i], state[i], kl, pl, al, bl, cl, kr, pr, ar, br, cr, True)
     elif fam == FAM_GPI:
-        a = env_value(kl, pl, x)
-        b = env_value(kr, pr, x)
+        al, bl, cl = _prm3(pl)
+        ar, br, cr = _prm3(pr)
+        a = _fval(kl, pl, al, bl, cl, x, True)
+        b = _fval(kr, pr, ar, br, cr, x, True)
         for i in range(N):
             wi = state[i]
             hi = b + r[i]
@@ -535,6 +613,193 @@ def _advance(fam, x, xprev, r, state, cache, kl, pl, kr, pr):
             e = r[i] if e > r[i] else e
             e = -r[i] if e < -r[i] else e
             state[i] = e
+
+
+@njit(cache=True, inline="always")
+def _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit):
+    """Next trial input: Newton with the one-sided slope on the side of the
+    root, kept inside the bracket (lo, hi); returns (x_new, checked_limit)."""
+    s = sr if f < 0.0 else sl
+    xn = x - f / s if s > 0.0 else np.nan
+    if not (xn > lo and xn < hi):
+        lim = hi if f < 0.0 else lo
+        if not checked_limit and math.isfinite(lim):
+            # try the input limit itself once: detects unreachable targets
+            checked_limit = True
+            xn = lim
+        elif math.isfinite(lo) and math.isfinite(hi):
+            xn = 0.5 * (lo + hi)
+        else:
+            step = max(1.0, 2.0 * abs(x - xprev))
+            xn = x + step if f < 0.0 else x - step
+    return xn, checked_limit
+
+
+@njit(cache=True, inline="always")
+def _shrink(f, x, lo, hi, xmin, xmax):
+    """Bracket update after evaluating f at x; returns (lo, hi, stop)."""
+    if f < 0.0:
+        lo = x
+        if x >= xmax:
+            return lo, hi, True  # above the largest reachable output: clip
+    elif f > 0.0:
+        hi = x
+        if x <= xmin:
+            return lo, hi, True
+    return lo, hi, hi - lo <= 1e-15 * (1.0 + abs(x))
+
+
+@njit(cache=True, inline="always")
+def _play_eval(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen):
+    """Output and one-sided slopes of a PI / symmetric mGPI for a new input x.
+
+    ``y = p0 g(x) + sum_i p_i g(clamp(z_i, x - r_i, x + r_i))``; the right
+    slope sr counts the operators that move when x increases (z_i <= x - r_i
+    or z_i > x + r_i), the left slope sl those that move when it decreases
+    (z_i < x - r_i or z_i >= x + r_i).  g0, dg0 = g(x), g'(x) are given.  The
+    envelope is evaluated only for operators that move strictly; one sitting
+    on a boundary (z_i == x -+ r_i, e.g. all of them at the previous input)
+    reuses its cached value and slope (cache = g(z), dcache = g'(z)).  The
+    values of the moving operators are left in sv, sd for the state update.
+    """
+    y = p0 * g0
+    sr = p0 * dg0
+    sl = sr
+    for i in range(r.size):
+        zi = state[i]
+        lo = x - r[i]
+        hi = x + r[i]
+        if zi < lo:
+            gi, di = _fval_der(kind, prm, a, b, c, lo, gen)
+            sv[i] = gi
+            sd[i] = di
+            y += p[i] * gi
+            sr += p[i] * di
+            sl += p[i] * di
+        elif zi > hi:
+            gi, di = _fval_der(kind, prm, a, b, c, hi, gen)
+            sv[i] = gi
+            sd[i] = di
+            y += p[i] * gi
+            sl += p[i] * di
+            sr += p[i] * di
+        else:
+            y += p[i] * cache[i]
+            if zi == lo:
+                sr += p[i] * dcache[i]
+            elif zi == hi:
+                sl += p[i] * dcache[i]
+    return y, sr, sl
+
+
+@njit(cache=True)
+def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
+    """`inverse_solve` for FAM_PLAY, compiled three times: for the PI
+    (constant kind: no envelope dispatch left in the loops), for the other
+    built-in closed forms (no general fallback call in the loops) and for
+    the rest.  Each copy costs ~2 s of first-use compilation (then cached);
+    the PI copy makes the PI inverse ~2x faster, the built-in one ~3x."""
+    if kind == IDENTITY:
+        return _play_solve_body(u, r, p, p0, state, xprev, IDENTITY, prm, xmin, xmax, rtol, out, info, False)
+    if kind == LINEAR or kind == TANH or kind == ATANH:
+        return _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, False)
+    return _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, True)
+
+
+@njit(cache=True, inline="always")
+def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, gen):
+    """`inverse_solve` for FAM_PLAY (PI and symmetric mGPI).
+
+    The same iteration as the general solver, with less work per sample:
+    the output at the previous input (the starting point) needs no envelope
+    evaluation (every operator sits inside or on its boundaries there, with
+    cached values and slopes, and the p0 term is the one of the previous
+    sample's last iterate), and the state update reuses the envelope values
+    of the last iterate, which is the accepted input.
+    """
+    N = r.size
+    a, b, c = _prm3(prm)
+    cache = np.empty(N)
+    dcache = np.empty(N)
+    sv = np.empty(N)
+    sd = np.empty(N)
+    for i in range(N):
+        cache[i], dcache[i] = _fval_der(kind, prm, a, b, c, state[i], gen)
+    gx, dgx = _fval_der(kind, prm, a, b, c, xprev, gen)
+    # output and one-sided slopes at the starting point (the previous input),
+    # carried over from the state update of the previous sample
+    y0 = 0.0
+    sr0 = 0.0
+    sl0 = 0.0
+    n_clip = 0
+    first = -1
+    max_it = 0
+    for k in range(u.size):
+        target = u[k]
+        tol = rtol * (1.0 + abs(target))
+        x = xprev
+        if k > 0:
+            y, sr, sl = y0, sr0, sl0
+        else:
+            # the initial state need not sit inside the boundaries at xprev
+            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen)
+        f = y - target
+        if f < 0.0:
+            lo = x
+            hi = xmax
+        else:
+            hi = x
+            lo = xmin
+        checked_limit = False
+        it = 0
+        while abs(f) > tol and it < 200:
+            it += 1
+            x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
+            gx, dgx = _fval_der(kind, prm, a, b, c, x, gen)
+            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen)
+            f = y - target
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax)
+            if stop:
+                break
+        if abs(f) > tol and (x >= xmax or x <= xmin):
+            n_clip += 1
+            if first < 0:
+                first = k
+        if it > max_it:
+            max_it = it
+        # advance the state to x, the last point evaluated (sv, sd hold the
+        # envelope at the new positions of the operators that move), and
+        # compute in the same pass the output and slopes at x for the next
+        # sample: every operator is then inside or on its boundaries, so this
+        # is `_play_eval(x)` term by term (same sums, same order).
+        y0 = p0 * gx
+        sr0 = p0 * dgx
+        sl0 = sr0
+        for i in range(N):
+            zi = state[i]
+            lo_i = x - r[i]
+            hi_i = x + r[i]
+            if zi < lo_i:
+                zi = lo_i
+                state[i] = zi
+                cache[i] = sv[i]
+                dcache[i] = sd[i]
+            elif zi > hi_i:
+                zi = hi_i
+                state[i] = zi
+                cache[i] = sv[i]
+                dcache[i] = sd[i]
+            y0 += p[i] * cache[i]
+            if zi == lo_i:
+                sr0 += p[i] * dcache[i]
+            elif zi == hi_i:
+                sl0 += p[i] * dcache[i]
+        xprev = x
+        out[k] = x
+    info[0] = n_clip
+    info[1] = first
+    info[2] = max_it
+    return xprev
 
 
 @njit(cache=True)
@@ -552,11 +817,8 @@ def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale
     clipped there.  info[0] = number of clipped samples, info[1] = first one,
     info[2] = largest iteration count.  Returns the last input.
     """
-    N = r.size
-    cache = np.empty(N)
     if fam == FAM_PLAY:
-        for i in range(N):
-            cache[i] = env_value(kl, pl, state[i])
+        return _play_solve(u, r, p, p0, state, xprev, kl, pl, xmin, xmax, rtol, out, info)
     n_clip = 0
     first = -1
     max_it = 0
@@ -564,7 +826,7 @@ def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale
         target = u[k]
         tol = rtol * (1.0 + abs(target))
         x = xprev
-        y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state, cache,
+        y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state,
                                        kl, pl, kr, pr, kh, ph, hscale)
         f = y - target
         if f < 0.0:
@@ -577,32 +839,12 @@ def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale
         it = 0
         while abs(f) > tol and it < 200:
             it += 1
-            s = sr if f < 0.0 else sl
-            xn = x - f / s if s > 0.0 else np.nan
-            if not (xn > lo and xn < hi):
-                lim = hi if f < 0.0 else lo
-                if not checked_limit and math.isfinite(lim):
-                    # try the input limit itself once: detects unreachable targets
-                    checked_limit = True
-                    xn = lim
-                elif math.isfinite(lo) and math.isfinite(hi):
-                    xn = 0.5 * (lo + hi)
-                else:
-                    step = max(1.0, 2.0 * abs(x - xprev))
-                    xn = x + step if f < 0.0 else x - step
-            y, sr, sl = _output_and_slopes(fam, xn, xprev, r, p, p0, state, cache,
+            x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
+            y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state,
                                            kl, pl, kr, pr, kh, ph, hscale)
             f = y - target
-            x = xn
-            if f < 0.0:
-                lo = x
-                if x >= xmax:
-                    break  # above the largest reachable output: clip
-            elif f > 0.0:
-                hi = x
-                if x <= xmin:
-                    break
-            if hi - lo <= 1e-15 * (1.0 + abs(x)):
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax)
+            if stop:
                 break
         if abs(f) > tol and (x >= xmax or x <= xmin):
             n_clip += 1
@@ -610,7 +852,7 @@ def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale
                 first = k
         if it > max_it:
             max_it = it
-        _advance(fam, x, xprev, r, state, cache, kl, pl, kr, pr)
+        _advance(fam, x, xprev, r, state, kl, pl, kr, pr)
         xprev = x
         out[k] = x
     info[0] = n_clip

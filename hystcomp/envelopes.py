@@ -347,7 +347,8 @@ class Polynomial(Envelope):
         Coefficients in increasing powers (``coeffs[k]`` multiplies v**k).
     interval : (float, float)
         The domain [lo, hi]; the polynomial is checked to be strictly
-        increasing there (its derivative has no root inside and is positive).
+        increasing there (its derivative is >= 0, zero only at isolated
+        points, as for v**3 at 0).
 
     Examples
     --------
@@ -362,7 +363,7 @@ class Polynomial(Envelope):
         c = np.asarray(coeffs, dtype=np.float64).reshape(-1)
         if c.size < 2 or not np.all(np.isfinite(c)):
             raise ValueError(
-                f"Parameter coeffs is {list(c)} but should hold at least two finite "
+                f"Parameter coeffs is {[float(x) for x in c]} but should hold at least two finite "
                 "coefficients (increasing powers)"
             )
         try:
@@ -374,16 +375,22 @@ class Polynomial(Envelope):
         self.coeffs = c
         self.domain = (lo, hi)
         dpoly = np.polynomial.Polynomial(c).deriv()
-        crit = [float(z.real) for z in dpoly.roots() if abs(z.imag) < 1e-12 and lo < z.real < hi]
+        # roots of the derivative without its negligible leading coefficients
+        # (a tiny c_n, e.g. 1e-300, would overflow the companion matrix)
+        dc = dpoly.coef
+        scale = float(np.max(np.abs(dc))) if dc.size else 0.0
+        trimmed = np.polynomial.Polynomial(np.polynomial.polynomial.polytrim(dc, tol=1e-15 * scale))
+        crit = [float(z.real) for z in trimmed.roots() if abs(z.imag) < 1e-12 and lo < z.real < hi]
         probe = np.concatenate([[lo, hi], np.linspace(lo, hi, 257), crit])
         dmin = float(np.min(dpoly(probe))) if dpoly.degree() >= 0 else 0.0
-        # a derivative root strictly inside where the sign does not change is
-        # still a flat point: strictly increasing but with zero slope, allowed
-        # only if the derivative is >= 0 everywhere and > 0 in between.
-        if dmin < 0 or (dmin == 0 and not crit) or np.all(dpoly(probe) <= 0):
+        # a derivative root where the sign does not change (inside, or at an
+        # end of the interval) is an isolated flat point: the polynomial is
+        # still strictly increasing, so it is allowed as long as the
+        # derivative is >= 0 everywhere and not identically 0.
+        if dmin < 0 or np.all(dpoly(probe) <= 0):
             k = int(np.argmin(dpoly(probe)))
             raise ValueError(
-                f"Polynomial(coeffs={list(c)}) is not increasing on {interval}: its "
+                f"Polynomial(coeffs={[float(x) for x in c]}) is not increasing on {interval}: its "
                 f"derivative is {float(dpoly(probe)[k])} at v = {float(probe[k])}"
             )
         self.range = (float(np.polynomial.Polynomial(c)(lo)), float(np.polynomial.Polynomial(c)(hi)))

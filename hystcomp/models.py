@@ -306,7 +306,7 @@ class MGPI(HysteresisModel):
                 xs = x[s:s + _BLOCK]
                 zs = block[: xs.size]
                 _k.play_states(xs, self._r, state, zs)
-                y[s:s + xs.size] = self.p0 * g._value(xs) + _extended(g, zs) @ self._p
+                y[s:s + xs.size] = _row_sums(self.p0 * g._value(xs), _extended(g, zs), self._p)
             return y
         r_all = np.concatenate([[0.0], self._r])
         p_all = np.concatenate([[self.p0], self._p])
@@ -322,7 +322,7 @@ class MGPI(HysteresisModel):
             upper = _extended(self.envelope_right, xs[:, None] + r_all[None, :])
             ws = block[: xs.size]
             _k.bounded_play_states(lower, upper, state, ws)
-            y[s:s + xs.size] = ws @ p_all
+            y[s:s + xs.size] = _row_sums(0.0, ws, p_all)
         return y
 
     def operator_responses(self, v, initial_state=None):
@@ -393,6 +393,19 @@ class MGPI(HysteresisModel):
                 "(as for gamma = v^3: eq. 58 divides by beta'(0), the thesis's section 6.2 "
                 "leaves this open); use model.exact_inverse()"
             )
+        if not reasons:
+            # eq. 58 evaluates beta'(q_j) at the inverse thresholds q_j = phi(r_j)
+            # (eq. 56): they must lie inside beta's domain, gamma's range (a
+            # saturating gamma with large weights pushes them beyond it)
+            q = np.atleast_1d(self.loading_curve(self._r))
+            try:
+                g.inverse_envelope().derivative(q)
+            except ValueError:
+                reasons.append(
+                    f"the inverse thresholds q_j = phi(r_j) (eq. 56) reach {float(np.max(q)):.6g}, "
+                    f"outside gamma's range {g.range} where eq. 58 needs beta'(q_j); "
+                    "use model.exact_inverse()"
+                )
         return reasons
 
     def inverse(self):
@@ -771,12 +784,29 @@ class GPI(HysteresisModel):
                 f"envelope_right={self.envelope_right!r}, H={self.H!r})")
 
 
+def _row_sums(first, w, p):
+    """first + sum_i p_i w[:, i], summed operator by operator in order.
+
+    Unlike ``w @ p`` (BLAS, whose summation order depends on the number of
+    rows) each row's result does not depend on the block it is in, so chunked
+    simulation equals the one-shot result bit for bit.
+    """
+    acc = np.zeros(w.shape[0]) + first
+    for i in range(w.shape[1]):
+        acc += p[i] * w[:, i]
+    return acc
+
+
 def _weighted_bounds(p, lo, hi):
     pos = p > 0
     with np.errstate(invalid="ignore"):
         upper = np.sum(np.where(pos, p * hi, np.where(p < 0, p * lo, 0.0)))
         lower = np.sum(np.where(pos, p * lo, np.where(p < 0, p * hi, 0.0)))
-    return (float(lower), float(upper))
+    # widen by the rounding bound of an (N+1)-term sum so that outputs summed
+    # in another order (the kernels) never exceed the bounds by an ulp
+    mag = float(np.sum(np.abs(p))) * max([abs(b) for b in (lo, hi) if np.isfinite(b)] + [0.0])
+    margin = (p.size + 1) * np.finfo(float).eps * mag
+    return (float(lower - margin), float(upper + margin))
 
 
 _MODELS = {"PI": PI, "MGPI": MGPI, "GPI": GPI, "StopPI": StopPI}

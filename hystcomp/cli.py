@@ -1,0 +1,126 @@
+"""The ``hystcomp`` console command.
+
+::
+
+    hystcomp demo   [--out DIR]   # the thesis reproduction (for now)
+    hystcomp thesis [--out DIR]   # all thesis figures + section 5 error table
+    hystcomp --version
+
+Both subcommands write the PNG figures of the thesis reproduction, print the
+table of section 5 compensation errors (analytic inverse of eqs. 54-58 vs
+the exact inverse) and save it as ``compensation_errors.csv``.
+"""
+
+import argparse
+import csv
+import os
+import sys
+
+from . import __version__
+
+__all__ = ["main", "build_parser", "reproduce"]
+
+_FIELDS = ("section", "inverse", "rms", "max", "rms_percent", "max_percent", "span")
+
+
+def reproduce(out, echo=print, dt=None):
+    """Write every thesis figure and the section 5 error table into `out`.
+
+    Parameters
+    ----------
+    out : str or path
+        Output folder (created if missing).
+    echo : callable, optional
+        Receives the progress and result lines (default :func:`print`).
+    dt : float, optional
+        Sampling step of the cases (default :data:`hystcomp.thesis.DT`).
+
+    Returns
+    -------
+    list of dict
+        The rows of the compensation error table
+        (:func:`hystcomp.thesis.compensation_errors`).
+
+    Examples
+    --------
+    >>> import tempfile, os
+    >>> with tempfile.TemporaryDirectory() as d:
+    ...     rows = reproduce(d, echo=lambda s: None, dt=0.01)
+    ...     "compensation_errors.csv" in os.listdir(d)
+    True
+    """
+    import matplotlib
+
+    matplotlib.use("Agg")  # figures are only written to files
+    from . import plotting, thesis
+
+    os.makedirs(out, exist_ok=True)
+    echo(f"hystcomp {__version__}: reproducing W. Ye's thesis into {out}")
+    echo("building figures (sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4) ...")
+    for stem, fig in plotting.thesis_figures(dt=dt).items():
+        path = os.path.join(out, stem + ".png")
+        fig.savefig(path, dpi=100)
+        echo(f"  wrote {path}")
+    echo("computing section 5 compensation errors ...")
+    rows = thesis.compensation_errors(**({} if dt is None else {"dt": dt}))
+    path = os.path.join(out, "compensation_errors.csv")
+    with open(path, "w", newline="") as fh:
+        writer = csv.DictWriter(fh, fieldnames=_FIELDS)
+        writer.writeheader()
+        for row in rows:
+            writer.writerow({k: row[k] for k in _FIELDS})
+    echo("")
+    echo("Compensation error model(inverse(u)) - u (% of the reference span)")
+    echo(f"{'section':8s} {'inverse':9s} {'RMS %':>10s} {'max %':>10s}")
+    for row in rows:
+        echo(f"{row['section']:8s} {row['inverse']:9s} {row['rms_percent']:10.3g} {row['max_percent']:10.3g}")
+    echo(f"  wrote {path}")
+    return rows
+
+
+def build_parser():
+    """The argument parser of the ``hystcomp`` command.
+
+    Examples
+    --------
+    >>> build_parser().parse_args(["thesis", "--out", "x"]).out
+    'x'
+    """
+    parser = argparse.ArgumentParser(
+        prog="hystcomp",
+        description="Hysteresis models (PI, GPI, mGPI) and their inverses: reproduce W. Ye's thesis.",
+    )
+    parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}",
+                        help="print the hystcomp version and exit")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    for name, text in (
+        ("demo", "run the demonstration (for now the thesis reproduction: figures, "
+                 "error table and CSV)"),
+        ("thesis", "reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
+                   "a printed table of the section 5 compensation errors and its CSV"),
+    ):
+        p = sub.add_parser(name, help=text, description=text)
+        p.add_argument("--out", metavar="DIR", default="hystcomp-demo",
+                       help="output folder for the PNG figures and compensation_errors.csv "
+                            "(default: ./hystcomp-demo, created if missing)")
+    return parser
+
+
+def main(argv=None):
+    """Entry point of the ``hystcomp`` console script; returns the exit status.
+
+    Examples
+    --------
+    >>> main(["--version"])
+    Traceback (most recent call last):
+    ...
+    SystemExit: 0
+    """
+    args = build_parser().parse_args(argv)
+    if args.command in ("demo", "thesis"):
+        reproduce(args.out)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
