@@ -10,8 +10,9 @@ inline.  Outside its domain an envelope counts as -inf (below) or +inf
 (above), so an operator boundary that leaves the domain never binds.
 
 Speed (see benchmarks/bench_models.py): inner loops evaluate built-in
-envelopes inline (`_fval`, `_fval_der`) and the hot kernels are compiled
-once per envelope kind (a constant kind removes the dispatch from the loop).
+envelopes inline (`_fval`, `_fval_der`) and the hot kernels are compiled in
+a few copies (built-in closed forms without the general fallback in the
+loop, the rest with it; the PI inverse with a constant kind).
 Every fast path performs the same floating-point operations in the same
 order as the plain formulas, so results do not depend on the path taken
 (and chunked runs equal one-shot runs bit for bit).  No fastmath.
@@ -51,13 +52,16 @@ _INF = np.inf
 # ----------------------------------------------------------------------------
 @njit(cache=True, inline="always")
 def _tanh(x):
-    # tanh through expm1 of a non-positive argument: accurate to a few ulp
-    # and about twice as fast as libm's tanh here.
-    if x >= 0.0:
-        e = math.expm1(-2.0 * x)
-        return -e / (e + 2.0)
-    e = math.expm1(2.0 * x)
-    return e / (e + 2.0)
+    # tanh within 2 ulp of libm's, cheaper: for |x| >= 0.55 the form
+    # 1 - 2/(exp(2|x|) + 1) has no cancellation and exp costs less than expm1
+    # (or tanh) in glibc; near 0 expm1 keeps full relative accuracy.
+    a = abs(x)
+    if a < 0.55:
+        e = math.expm1(2.0 * a)
+        t = e / (e + 2.0)
+    else:
+        t = 1.0 - 2.0 / (math.exp(2.0 * a) + 1.0)
+    return t if x >= 0.0 else -t
 
 
 @njit(cache=True)
@@ -201,8 +205,8 @@ def env_inverse(kind, prm, y):
 # with exactly the same floating-point operations as `_base_value` /
 # `_val_der` (so results are bit-identical); only Polynomial and Inverse
 # reach the general code, and only in loops compiled with gen=True.
-# (They are small enough for LLVM to inline; numba-level inline="always"
-# here made the first compilation 6x slower.)
+# (numba-level inlining: LLVM alone leaves the tanh paths ~30 % slower; it
+# costs first-use compilation time, so the number of call sites is kept small.)
 @njit(cache=True, inline="always")
 def _prm3(prm):
     a = prm[0] if prm.size > 0 else 0.0
@@ -211,7 +215,7 @@ def _prm3(prm):
     return a, b, c
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _fval(kind, prm, a, b, c, x, gen):
     """env_value(kind, prm, x) with (a, b, c) = _prm3(prm).  `gen` False
     promises a built-in closed-form kind (Identity, Linear, Tanh, Atanh): the
@@ -234,7 +238,7 @@ def _fval(kind, prm, a, b, c, x, gen):
     return np.nan
 
 
-@njit(cache=True)
+@njit(cache=True, inline="always")
 def _fval_der(kind, prm, a, b, c, x, gen):
     """_val_der(kind, prm, x) with (a, b, c) = _prm3(prm); `gen` as in `_fval`."""
     if kind == TANH:
@@ -510,7 +514,7 @@ FAM_GPI = 2     # generalized plays; state w; memoryless H(x) = hk(x)
 FAM_STOP = 3    # stops; state w, memoryless p0 x
 
 
-@njit(cache=True, inline="always")
+@njit(cache=True)
 def _val_der(kind, prm, x):
     a, b, c = _prm3(prm)
     return _fval_der(kind, prm, a, b, c, x, True)
@@ -669,20 +673,13 @@ def _play_eval(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a,
         zi = state[i]
         lo = x - r[i]
         hi = x + r[i]
-        if zi < lo:
-            gi, di = _fval_der(kind, prm, a, b, c, lo, gen)
+        if zi < lo or zi > hi:
+            gi, di = _fval_der(kind, prm, a, b, c, lo if zi < lo else hi, gen)
             sv[i] = gi
             sd[i] = di
             y += p[i] * gi
             sr += p[i] * di
             sl += p[i] * di
-        elif zi > hi:
-            gi, di = _fval_der(kind, prm, a, b, c, hi, gen)
-            sv[i] = gi
-            sd[i] = di
-            y += p[i] * gi
-            sl += p[i] * di
-            sr += p[i] * di
         else:
             y += p[i] * cache[i]
             if zi == lo:
@@ -697,8 +694,8 @@ def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, inf
     """`inverse_solve` for FAM_PLAY, compiled three times: for the PI
     (constant kind: no envelope dispatch left in the loops), for the other
     built-in closed forms (no general fallback call in the loops) and for
-    the rest.  Each copy costs ~2 s of first-use compilation (then cached);
-    the PI copy makes the PI inverse ~2x faster, the built-in one ~3x."""
+    the rest.  Each copy costs ~3 s of first-use compilation (then cached);
+    the PI copy makes the PI inverse ~1.7x faster, the built-in one ~3x."""
     if kind == IDENTITY:
         return _play_solve_body(u, r, p, p0, state, xprev, IDENTITY, prm, xmin, xmax, rtol, out, info, False)
     if kind == LINEAR or kind == TANH or kind == ATANH:
@@ -723,9 +720,9 @@ def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out
     dcache = np.empty(N)
     sv = np.empty(N)
     sd = np.empty(N)
-    for i in range(N):
-        cache[i], dcache[i] = _fval_der(kind, prm, a, b, c, state[i], gen)
-    gx, dgx = _fval_der(kind, prm, a, b, c, xprev, gen)
+    for i in range(N):  # once per call: not worth inlined copies
+        cache[i], dcache[i] = _val_der(kind, prm, state[i])
+    gx, dgx = _val_der(kind, prm, xprev)
     # output and one-sided slopes at the starting point (the previous input),
     # carried over from the state update of the previous sample
     y0 = 0.0

@@ -1021,8 +1021,9 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
         c3l, ln rho, c2r, c3r]``.  A custom triple's make returns the pair
         ``(gl, gr)``.
     maxiter : int
-        Iterations of the outer optimiser (Powell) or 20 x maxiter residual
-        evaluations (least squares).
+        Iterations of the outer optimiser (Powell), or the budget of
+        residual evaluations of least squares (its finite-difference
+        Jacobians, one evaluation per parameter per step, come on top).
     optimizer : {"powell", "least_squares"}, optional
         The outer optimiser: bounded Powell on the training MSE (default for
         symmetric envelopes) or ``scipy.optimize.least_squares`` (trust-region
@@ -1126,7 +1127,7 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
         # finite-difference steps 1e-5 relative: well above the QP solver's
         # ~1e-8 relative noise in the weights, well below the parameters' scale
         opt = optimize.least_squares(residual, np.clip(np.asarray(x0, float), lo, hi), bounds=(lo, hi),
-                                     diff_step=1e-5, max_nfev=20 * maxiter)
+                                     diff_step=1e-5, max_nfev=maxiter)
         success, message, nfev, xbest = bool(opt.status > 0), str(opt.message), int(opt.nfev), opt.x
     res = fit_weights(v, y, **envs(xbest), **kw)
     out = EnvelopeFitResult(**res.__dict__)

@@ -324,7 +324,7 @@ def test_example_script_runs(tmp_path):
     spec.loader.exec_module(mod)
     t, v, y, train, held, results = mod.run(n_thresholds=10, families=("atanh",), maxiter=5)
     text = mod.table(results)
-    assert "PI" in text and "mGPI (atanh)" in text
+    assert "PI" in text and "mGPI (atanh)" in text and "mGPI asym (linear)" in text
     png = mod.plot(t, v, y, held, results, tmp_path)
     assert png.exists() and png.stat().st_size > 10_000
 
