@@ -25,6 +25,7 @@ import numpy as np
 from . import _kernels as _k
 from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
 from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
+from .operators import modified_play
 
 __all__ = ["HysteresisModel", "PI", "StopPI", "GPI", "MGPI", "Invertibility", "model_from_dict"]
 
@@ -328,8 +329,6 @@ class MGPI(HysteresisModel):
     def operator_responses(self, v, initial_state=None):
         """Outputs of every operator, shape (n, N+1): column 0 is the r = 0
         operator, column i the operator of threshold r_i (for figures)."""
-        from .operators import modified_play
-
         x = as_signal(v, "v")
         self._check_input_domain(x)
         r_all = np.concatenate([[0.0], self._r])
@@ -415,7 +414,7 @@ class MGPI(HysteresisModel):
         (eq. 58, read with g_j, not q_j, in eq. 57's last term), p0 = g0 = 1/p0
         (eq. 54) and envelope beta = gamma^-1 (eq. 55).  Exact for linear
         envelopes; for nonlinear ones an approximation (see
-        :func:`hystcomp.inverses.compensation_error`).
+        :func:`hystcomp.inverses.tracking_error`).
 
         Raises
         ------
