@@ -2,13 +2,15 @@
 
 ::
 
-    hystcomp demo   [--out DIR]   # the thesis reproduction (for now)
-    hystcomp thesis [--out DIR]   # all thesis figures + section 5 error table
+    hystcomp demo   [--out DIR] [...]  # closed-loop study: five scenarios, exact and analytic compensators
+    hystcomp thesis [--out DIR]        # all thesis figures + section 5 error table
     hystcomp --version
 
-Both subcommands write the PNG figures of the thesis reproduction, print the
-table of section 5 compensation errors (analytic inverse of eqs. 54-58 vs
-the exact inverse) and save it as ``compensation_errors.csv``.
+``demo`` runs the thesis's mGPI actuator in front of a piezo stage through the
+five loops of :mod:`hystcomp.loops` (see :mod:`hystcomp.demo`); ``thesis``
+writes the PNG figures of the thesis reproduction, prints the table of
+section 5 compensation errors (analytic inverse of eqs. 54-58 vs the exact
+inverse) and saves it as ``compensation_errors.csv``.
 """
 
 import argparse
@@ -86,23 +88,26 @@ def build_parser():
     >>> build_parser().parse_args(["thesis", "--out", "x"]).out
     'x'
     """
+    from . import demo
+
     parser = argparse.ArgumentParser(
         prog="hystcomp",
-        description="Hysteresis models (PI, GPI, mGPI) and their inverses: reproduce W. Ye's thesis.",
+        description="Model and cancel actuator hysteresis (PI, GPI, mGPI) in control loops.",
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}",
                         help="print the hystcomp version and exit")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
-    for name, text in (
-        ("demo", "run the demonstration (for now the thesis reproduction: figures, "
-                 "error table and CSV)"),
-        ("thesis", "reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
-                   "a printed table of the section 5 compensation errors and its CSV"),
-    ):
-        p = sub.add_parser(name, help=text, description=text)
-        p.add_argument("--out", metavar="DIR", default="hystcomp-demo",
-                       help="output folder for the PNG figures and compensation_errors.csv "
-                            "(default: ./hystcomp-demo, created if missing)")
+    text = ("closed-loop study: the thesis's mGPI actuator (saturating tanh envelope) in front of a "
+            "piezo stage, five scenarios (open loop, inverse feedforward, PID, PID + compensator, "
+            "feedforward + PID) with the exact and the analytic compensator; prints the comparison "
+            "table, writes PNG figures and a CSV")
+    demo.add_arguments(sub.add_parser("demo", help=text, description=text))
+    text = ("reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
+            "a printed table of the section 5 compensation errors and its CSV")
+    p = sub.add_parser("thesis", help=text, description=text)
+    p.add_argument("--out", metavar="DIR", default="hystcomp-thesis",
+                   help="output folder for the PNG figures and compensation_errors.csv "
+                        "(default: ./hystcomp-thesis, created if missing)")
     return parser
 
 
@@ -117,9 +122,15 @@ def main(argv=None):
     SystemExit: 0
     """
     args = build_parser().parse_args(argv)
-    if args.command in ("demo", "thesis"):
+    if args.command == "thesis":
         reproduce(args.out)
-    return 0
+        return 0
+    if args.command == "demo":
+        from . import demo
+
+        res = demo.run(args)
+        return 0 if all(ok for ok, _ in res["checks"].values()) else 1
+    return 2
 
 
 if __name__ == "__main__":

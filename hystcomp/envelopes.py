@@ -293,7 +293,7 @@ class Tanh(Envelope):
 
 
 class Atanh(Envelope):
-    """gamma(v) = a atanh(b v) + offset on the open domain |v| < 1/b.
+    """gamma(v) = a atanh(b v) + offset on the open domain ``|v| < 1/b``.
 
     Thesis section 5.4 uses gamma = atanh(0.5 v), i.e. ``Atanh(1, 0.5)``,
     whose inverse is beta = 2 tanh(v).

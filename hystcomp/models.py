@@ -600,7 +600,7 @@ class StopPI(HysteresisModel):
         return y
 
     def output_bounds(self):
-        """Bounded only if p0 = 0: then |w| <= sum_i |p_i| r_i."""
+        """Bounded only if p0 = 0: then ``|w| <= sum_i |p_i| r_i``."""
         if self.p0 != 0.0:
             return (-np.inf, np.inf)
         b = float(np.sum(np.abs(self._p) * self._r))

@@ -295,7 +295,7 @@ def section_4_1(spacing=0.05, R=10.0, dt=DT):
 
 
 def loading_curve_deviation(case, n_points=2001):
-    """Max |phi_N(r) - phi(r)| over r in [0, R] for a :func:`section_4_1` case.
+    """Max ``|phi_N(r) - phi(r)|`` over r in [0, R] for a :func:`section_4_1` case.
 
     phi_N is the discretised model's loading curve, phi eq. 35.
 

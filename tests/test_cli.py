@@ -10,9 +10,9 @@ import hystcomp
 from hystcomp import cli
 
 
-def test_demo_writes_figures_table_and_csv(tmp_path, capsys):
-    out = tmp_path / "demo"
-    assert cli.main(["demo", "--out", str(out)]) == 0
+def test_thesis_writes_figures_table_and_csv(tmp_path, capsys):
+    out = tmp_path / "thesis"
+    assert cli.main(["thesis", "--out", str(out)]) == 0
     text = capsys.readouterr().out
     pngs = sorted(p.name for p in out.glob("*.png"))
     assert pngs == sorted(["fig2_1.png", "fig3_13.png", "fig3_14.png", "fig3_15.png", "fig3_16.png",
@@ -34,6 +34,16 @@ def test_console_entry_thesis_subprocess(tmp_path):
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0
     assert "--out" in proc.stdout and "compensation" in proc.stdout
+
+
+def test_demo_subcommand_runs_the_closed_loop_study(tmp_path, capsys):
+    # a short record keeps the test quick; tests/test_demo.py checks the targets
+    out = tmp_path / "demo"
+    status = cli.main(["demo", "--out", str(out), "--duration", "2", "--no-figures"])
+    text = capsys.readouterr().out
+    assert status == 0, text
+    assert (out / "loop_comparison.csv").stat().st_size > 100
+    assert "feedforward" in text.lower()
 
 
 def test_version(capsys):

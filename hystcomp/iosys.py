@@ -1,0 +1,678 @@
+"""Hysteresis models and their inverses as python-control systems.
+
+Every model (PI, StopPI, GPI, mGPI, ...) and every compensator (analytic
+inverse, :class:`~hystcomp.inverses.ExactInverse`, ...) becomes a discrete
+:class:`control.NonlinearIOSystem` whose state is the model's explicit
+state (the operator outputs / play positions):
+
+* :func:`hysteresis_system` -- ``w[k] = model(v[k]; x[k])``, ``x[k+1]`` the
+  state after ``v[k]`` (feedthrough: the output answers the current input);
+* :func:`compensator_system` -- ``v[k] = inverse(k_nom * u[k]; x[k])``;
+* :func:`piezo_stage`, :func:`pid`, :func:`discretize` -- a plant and a
+  controller for the loops of :mod:`hystcomp.loops`;
+* :func:`interconnect` -- :func:`control.interconnect` after a wiring check
+  (:func:`check_wiring`) that names the blocks at fault for timebase
+  mismatches, algebraic loops and unknown signal names.
+
+The blocks work through the model protocol only (``simulate(v,
+initial_state, return_state)``, ``n_states``, ``default_state()``), so any
+model that follows it works; PI, mGPI, StopPI and exact inverses call the
+compiled kernels directly (fast paths that run the same kernel with the same
+arguments as ``simulate``, hence the same numbers).
+
+Model data stay in closures, never in python-control's ``params`` (an
+interconnection merges the params of all its subsystems into one dict).
+
+Examples
+--------
+>>> import numpy as np, control as ct
+>>> from hystcomp import PI
+>>> model = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+>>> block = hysteresis_system(model, dt=0.01, name="actuator")
+>>> t = np.arange(200) * 0.01
+>>> v = 3 * np.sin(2 * np.pi * t)
+>>> resp = ct.input_output_response(block, t, v)
+>>> bool(np.allclose(resp.outputs, model.simulate(v), rtol=0, atol=1e-12))
+True
+"""
+
+import warnings
+
+import numpy as np
+
+import control as ct
+
+from . import _kernels as _k
+from ._validation import as_scalar, check_choice
+from .models import GPI, MGPI, HysteresisModel, StopPI
+
+__all__ = [
+    "hysteresis_system", "compensator_system", "mean_gain", "initial_state",
+    "piezo_stage", "pid", "discretize", "check_wiring", "interconnect",
+    "WiringError",
+]
+
+
+class WiringError(ValueError):
+    """A loop is wired wrongly (timebases, algebraic loop, unknown signal)."""
+
+
+# ----------------------------------------------------------------------------
+# step functions: (output, update) pairs on an explicit state
+# ----------------------------------------------------------------------------
+def _generic_steps(obj, gain=1.0):
+    """Output and update of any object with the simulate protocol."""
+
+    def run(x, u):
+        with warnings.catch_warnings():
+            # clipped targets are actuator saturation inside a loop; a warning
+            # per step would flood the console
+            warnings.simplefilter("ignore")
+            y, s = obj.simulate(np.array([gain * u]), initial_state=x, return_state=True)
+        return y, s
+
+    def out(x, u):
+        return run(x, u)[0]
+
+    def upd(x, u):
+        return run(x, u)[1]
+
+    return out, upd
+
+
+def _model_kernel_steps(model):
+    """Fast steps for models with a compiled forward kernel, or None.
+
+    They call the same kernel with the same arguments as ``model.simulate``
+    on a one-sample record, so the block equals the model bit for bit.
+    """
+    if type(model) in (MGPI,) or isinstance(model, MGPI):
+        if model.symmetric:
+            kind, prm = model.envelope_left.kernel_spec()
+            if kind == _k.CUSTOM:
+                return None
+            r, p, p0 = model._r, model._p, model.p0
+
+            def run(x, u):
+                z = np.array(x, dtype=np.float64)
+                y = np.empty(1)
+                _k.play_sum(np.array([float(u)]), r, p, p0, z, kind, prm, y)
+                return y, z
+        else:
+            kl, pl = model.envelope_left.kernel_spec()
+            kr, pr = model.envelope_right.kernel_spec()
+            if _k.CUSTOM in (kl, kr):
+                return None
+            r = np.concatenate([[0.0], model._r])
+            p = np.concatenate([[model.p0], model._p])
+
+            def run(x, u):
+                w = np.array(x, dtype=np.float64)
+                y = np.empty(1)
+                _k.mplay_sum(np.array([float(u)]), r, p, w, kl, pl, kr, pr, y)
+                return y, w
+    elif isinstance(model, StopPI):
+        r, p, p0 = model._r, model._p, model.p0
+
+        def run(x, u):
+            s = np.array(x, dtype=np.float64)
+            w = s[:-1].copy()
+            y = np.empty(1)
+            s[-1] = _k.stop_sum(np.array([float(u)]), r, p, p0, w, s[-1], y)
+            s[:-1] = w
+            return y, s
+    else:
+        return None
+
+    def checked(x, u):
+        y, s = run(x, u)
+        if not np.isfinite(y[0]):
+            # the kernels count inputs outside an envelope's domain as +-inf;
+            # say so here rather than let python-control see NaN (which it
+            # reports as an algebraic loop)
+            model._check_input_domain(np.array([float(u)]))
+            raise ValueError(f"Block input {u!r} gives the non-finite output {y[0]} from the state {x!r} "
+                             f"of {model!r}")
+        return y, s
+
+    return (lambda x, u: checked(x, u)[0]), (lambda x, u: checked(x, u)[1])
+
+
+def _exact_inverse_steps(comp, gain):
+    """Fast steps of an ExactInverse: the compiled solver on one sample,
+    with the arguments ``ExactInverse.simulate`` passes it."""
+    fam = comp._fam
+    args = (comp._r, comp._p, comp._p0)
+    env = (comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph, comp._hscale)
+    lo, hi = comp.input_limits
+
+    def run(x, u):
+        st = np.array(x, dtype=np.float64)
+        xprev = st[0]
+        kstate = st[1:-1].copy() if fam == _k.FAM_STOP else st[1:].copy()
+        out = np.empty(1)
+        info = np.zeros(3, dtype=np.int64)
+        xlast = _k.inverse_solve(fam, np.array([gain * u]), args[0], args[1], args[2], kstate, xprev,
+                                 *env, lo, hi, 1e-14, out, info)
+        if fam == _k.FAM_STOP:
+            new = np.concatenate([[xlast], kstate, [xlast]])
+        else:
+            new = np.concatenate([[xlast], kstate])
+        return out, new
+
+    return (lambda x, u: run(x, u)[0]), (lambda x, u: run(x, u)[1])
+
+
+def _block(kind, obj, out, upd, n_states, dt, name, inputs, outputs, extra=None):
+    def updfcn(t, x, u, params):
+        return upd(x, float(np.asarray(u).reshape(-1)[0]))
+
+    def outfcn(t, x, u, params):
+        return out(x, float(np.asarray(u).reshape(-1)[0]))
+
+    sys = ct.nlsys(updfcn, outfcn, states=n_states, inputs=inputs, outputs=outputs, dt=dt, name=name)
+    # read by hystcomp.loops (compiled loops, default initial states, wiring
+    # checks); python-control ignores them
+    sys._hystcomp = dict(kind=kind, object=obj, feedthrough=True, default_state=obj.default_state(),
+                         **(extra or {}))
+    return sys
+
+
+def _check_protocol(obj, name):
+    for attr in ("simulate", "n_states", "default_state"):
+        if not hasattr(obj, attr):
+            raise TypeError(
+                f"Parameter {name} is {obj!r}, which has no {attr!r}; expected an object with "
+                "simulate(x, initial_state=None, return_state=False), n_states and default_state()"
+            )
+
+
+def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w"):
+    """A hysteresis model as a discrete python-control system.
+
+    ``w[k]`` is the model's output for the input ``v[k]`` from the state
+    ``x[k]`` (the model's explicit state, e.g. the play positions of eq. 49),
+    and ``x[k+1]`` is the state after ``v[k]``; so
+    ``ct.input_output_response(block, t, v).outputs == model.simulate(v)``
+    (from the virgin state, pass ``X0=initial_state(block)`` when it is not
+    zero).
+
+    Parameters
+    ----------
+    model : HysteresisModel
+        Any model with the protocol ``simulate(v, initial_state=None,
+        return_state=False)``, ``n_states``, ``default_state()``.  PI, mGPI
+        and StopPI with compiled envelopes run their kernel directly.
+    dt : True or float
+        Sampling time; True inherits the loop's.
+    name : str, optional
+        Block name (python-control makes one up if None).
+    inputs, outputs : str
+        Signal names of the actuator input and output.
+
+    Returns
+    -------
+    control.NonlinearIOSystem
+
+    Examples
+    --------
+    >>> from hystcomp import MGPI
+    >>> from hystcomp.envelopes import Tanh
+    >>> import numpy as np
+    >>> m = MGPI.from_density(lambda r: np.exp(-0.1 * r), 0.25 * np.arange(1, 21), p0=1.0,
+    ...                       envelope=Tanh(10.0, 0.2))
+    >>> sys = hysteresis_system(m, name="actuator")
+    >>> sys.nstates, sys.input_labels, sys.output_labels
+    (20, ['v'], ['w'])
+    """
+    _check_protocol(model, "model")
+    steps = _model_kernel_steps(model) if isinstance(model, HysteresisModel) else None
+    if steps is None:
+        steps = _generic_steps(model)
+    out, upd = steps
+    return _block("hysteresis", model, out, upd, model.n_states, dt, name, inputs, outputs)
+
+
+def mean_gain(model, input_range, n_samples=2001):
+    """Mean slope of a hysteresis model over an input range.
+
+    The input sweeps from 0 to the lower end, up to the upper end, down and
+    up again (``n_samples`` samples per leg, dense for rate-dependent
+    models); the slope of the chord of the last (major) loop branch is
+    ``(w(hi) - w(lo)) / (hi - lo)``.
+
+    Parameters
+    ----------
+    model : object with ``simulate``
+    input_range : (float, float)
+        (lo, hi) with lo < hi: the actuator input range of the study.
+    n_samples : int
+        Samples per leg of the sweep.
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> round(mean_gain(PI([1.0], [1.0], p0=1.0), (-2.0, 2.0)), 6)  # 2 - 1 (play width) / 2
+    1.5
+    """
+    try:
+        lo, hi = float(input_range[0]), float(input_range[1])
+    except (TypeError, IndexError, ValueError):
+        raise ValueError(f"Parameter input_range is {input_range!r} but should be (lo, hi)") from None
+    if not (np.isfinite(lo) and np.isfinite(hi) and lo < hi):
+        raise ValueError(f"Parameter input_range is {input_range!r} but should be finite with lo < hi")
+    n = int(n_samples)
+    up = np.linspace(lo, hi, n)
+    v = np.concatenate([np.linspace(0.0, lo, n), up[1:], up[::-1][1:], up[1:]])
+    w = np.asarray(model.simulate(v))
+    return float((w[-1] - w[-n]) / (hi - lo))
+
+
+def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=None, inputs="u",
+                       outputs="v", input_range=None, compensator=None):
+    """An inverse compensator as a discrete python-control system.
+
+    ``v[k] = C(k_nom * u[k]; x[k])`` with C the inverse of `model` (exact or
+    analytic) and ``k_nom`` the nominal gain: the compensated actuator
+    ``model o C`` maps u to ``k_nom * u``.
+
+    Parameters
+    ----------
+    model : HysteresisModel
+        The model to invert (an identified one to study a mismatch).
+    method : {"exact", "analytic"}
+        ``model.exact_inverse()`` (per-sample solve) or ``model.inverse()``
+        (Krejci-Kuhnen for PI, the thesis's eqs. 54-58 for mGPI).
+    nominal_gain : None, float or "auto"
+        ``k_nom``; None means 1.  A bare inverse turns the actuator into a
+        unit gain, while the raw actuator has its own mean gain (about 2.5 in
+        the demo): at equal controller gains the compensated loop would then
+        be slower.  "auto" uses :func:`mean_gain` over `input_range`, so
+        the compensated and the raw loop have the same nominal loop gain.
+    dt : True or float
+        Sampling time; True inherits the loop's.
+    name : str, optional
+    inputs, outputs : str
+        Signal names (compensator input, actuator command).
+    input_range : (float, float), optional
+        Actuator input range for ``nominal_gain="auto"`` (required then).
+    compensator : object, optional
+        A ready compensator (``simulate``, ``n_states``, ``default_state``)
+        used instead of building one with `method`.
+
+    Returns
+    -------
+    control.NonlinearIOSystem
+        With ``nominal_gain`` and ``compensator`` attributes.
+
+    Targets the model cannot reach are clipped (actuator saturation) without
+    a warning per step.
+
+    Examples
+    --------
+    >>> import numpy as np, control as ct
+    >>> from hystcomp import PI
+    >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+    >>> comp = compensator_system(m, nominal_gain=2.0, dt=0.01)
+    >>> u = np.sin(np.linspace(0, 6, 300))
+    >>> v = ct.input_output_response(comp, np.arange(300) * 0.01, u).outputs
+    >>> bool(np.allclose(m.simulate(v), 2.0 * u, atol=1e-12))
+    True
+    """
+    check_choice(method, "method", ("exact", "analytic"))
+    if compensator is None:
+        if not isinstance(model, HysteresisModel) and not hasattr(model, "exact_inverse"):
+            raise TypeError(f"Parameter model is {model!r}; expected an hystcomp hysteresis model")
+        compensator = model.exact_inverse() if method == "exact" else model.inverse()
+        method_used = method
+    else:
+        method_used = "given"
+    _check_protocol(compensator, "compensator")
+    if nominal_gain is None:
+        k = 1.0
+    elif isinstance(nominal_gain, str):
+        check_choice(nominal_gain, "nominal_gain", ("auto",))
+        if input_range is None:
+            raise ValueError(
+                "Parameter nominal_gain is 'auto' but input_range is None; pass the actuator input "
+                "range (lo, hi) over which the mean slope is taken"
+            )
+        k = mean_gain(model, input_range)
+    else:
+        k = as_scalar(nominal_gain, "nominal_gain", positive=True)
+    from .inverses import ExactInverse
+
+    if isinstance(compensator, ExactInverse):
+        steps = _exact_inverse_steps(compensator, k)
+    else:
+        steps = None
+        if k == 1.0 and isinstance(compensator, HysteresisModel):
+            steps = _model_kernel_steps(compensator)
+        elif isinstance(compensator, HysteresisModel):
+            fast = _model_kernel_steps(compensator)
+            if fast is not None:
+                o, u_ = fast
+                steps = (lambda x, u: o(x, k * u)), (lambda x, u: u_(x, k * u))
+        if steps is None:
+            steps = _generic_steps(compensator, gain=k)
+    out, upd = steps
+    sys = _block("compensator", compensator, out, upd, compensator.n_states, dt, name, inputs, outputs,
+                 extra=dict(nominal_gain=k, method=method_used))
+    sys.nominal_gain = k
+    sys.compensator = compensator
+    return sys
+
+
+def initial_state(sys):
+    """X0 for ``ct.input_output_response``: every hystcomp block in its
+    default (virgin) state, every other state 0.
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> initial_state(hysteresis_system(PI([1.0], [1.0], p0=1.0))).tolist()
+    [0.0]
+    """
+    subs = getattr(sys, "syslist", None)
+    if subs is None:
+        info = getattr(sys, "_hystcomp", None)
+        if info is not None:
+            return np.asarray(info["default_state"], dtype=np.float64).copy()
+        return np.zeros(sys.nstates)
+    if not subs:
+        return np.zeros(0)
+    return np.concatenate([initial_state(s) for s in subs])
+
+
+# ----------------------------------------------------------------------------
+# plant and controller
+# ----------------------------------------------------------------------------
+def discretize(sys, dt, name=None):
+    """Zero-order-hold discretisation of a continuous LTI system, keeping
+    its signal names (and its name unless `name` is given).
+
+    Examples
+    --------
+    >>> p = discretize(piezo_stage(), 1e-4)
+    >>> p.dt, p.input_labels, p.output_labels, p.name
+    (0.0001, ['w'], ['y'], 'stage')
+    """
+    dt = as_scalar(dt, "dt", positive=True)
+    if not isinstance(sys, ct.LTI):
+        raise TypeError(f"Parameter sys is {type(sys).__name__}; expected a python-control LTI system")
+    if sys.isdtime(strict=True):
+        if np.isclose(sys.dt, dt, rtol=1e-12, atol=0):
+            return sys
+        raise WiringError(
+            f"System {sys.name!r} is already discrete with dt = {sys.dt}, not {dt}; "
+            "build it in continuous time and discretise it once"
+        )
+    ss = ct.ss(sys)
+    d = ct.sample_system(ss, dt, method="zoh", name=name or sys.name)
+    return ct.ss(d.A, d.B, d.C, d.D, dt, inputs=sys.input_labels, outputs=sys.output_labels,
+                 name=name or sys.name)
+
+
+def piezo_stage(gain=1.0, natural_freq_hz=300.0, damping=0.05, dt=None, name="stage", inputs="w",
+                outputs="y"):
+    """A piezo positioning stage: ``G(s) = gain wn^2 / (s^2 + 2 zeta wn s + wn^2)``.
+
+    Parameters
+    ----------
+    gain : float
+        DC gain (position per actuator output unit).
+    natural_freq_hz : float
+        Resonance frequency in Hz (real stages: a few hundred Hz).
+    damping : float
+        Damping ratio zeta (light: a few percent).
+    dt : float, optional
+        Sampling time: the stage discretised by zero-order hold; None for
+        the continuous system.
+    name, inputs, outputs : str
+        Block and signal names.
+
+    Returns
+    -------
+    control.StateSpace
+        States: position and velocity.
+
+    Examples
+    --------
+    >>> g = piezo_stage()
+    >>> float(ct.dcgain(g)), g.input_labels, g.output_labels
+    (1.0, ['w'], ['y'])
+    """
+    k = as_scalar(gain, "gain")
+    fn = as_scalar(natural_freq_hz, "natural_freq_hz", positive=True)
+    z = as_scalar(damping, "damping", nonnegative=True)
+    wn = 2 * np.pi * fn
+    A = [[0.0, 1.0], [-wn * wn, -2 * z * wn]]
+    B = [[0.0], [k * wn * wn]]
+    sys = ct.ss(A, B, [[1.0, 0.0]], [[0.0]], inputs=inputs, outputs=outputs, name=name,
+                states=["position", "velocity"])
+    return sys if dt is None else discretize(sys, dt)
+
+
+def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", outputs="u"):
+    """A discrete PID controller with a filtered derivative.
+
+    ``u[k] = kp e[k] + ki (I[k] + dt e[k]) + kd (e[k] - f[k]) / tau_d`` with
+    the integral ``I[k+1] = I[k] + dt e[k]`` (backward Euler: the current
+    error counts) and the low-pass ``f[k+1] = a f[k] + (1 - a) e[k]``,
+    ``a = exp(-dt/tau_d)`` (the zero-order-hold form of
+    ``kd s / (tau_d s + 1)``).
+
+    Parameters
+    ----------
+    kp, ki, kd : float
+        Proportional, integral and derivative gains.
+    dt : float
+        Sampling time.
+    tau_d : float, optional
+        Derivative filter time constant; default ``10 dt``.
+    output_limits : (float, float), optional
+        Saturation of u.  The integral then stops when u is saturated and
+        the error would drive it further (conditional integration, an
+        anti-windup scheme); the controller becomes a NonlinearIOSystem.
+    name, inputs, outputs : str
+
+    Returns
+    -------
+    control.StateSpace or control.NonlinearIOSystem
+        States ``[I, f]``.
+
+    Examples
+    --------
+    >>> c = pid(1.0, 10.0, 0.0, dt=1e-3)
+    >>> c.dt, c.nstates, float(c.D[0, 0])
+    (0.001, 2, 1.01)
+    """
+    kp, ki, kd = (as_scalar(x, n) for x, n in ((kp, "kp"), (ki, "ki"), (kd, "kd")))
+    dt = as_scalar(dt, "dt", positive=True)
+    tau = 10.0 * dt if tau_d is None else as_scalar(tau_d, "tau_d", positive=True)
+    a = float(np.exp(-dt / tau))
+    A = np.array([[1.0, 0.0], [0.0, a]])
+    B = np.array([[dt], [1.0 - a]])
+    C = np.array([[ki, -kd / tau]])
+    D = np.array([[kp + ki * dt + kd / tau]])
+    info = dict(kind="pid", kp=kp, ki=ki, kd=kd, dt=dt, tau_d=tau, A=A, B=B, C=C, D=D,
+                feedthrough=True, default_state=np.zeros(2), limits=None)
+    if output_limits is None:
+        sys = ct.ss(A, B, C, D, dt, inputs=inputs, outputs=outputs, name=name, states=["I", "f"])
+        sys._hystcomp = info
+        return sys
+    try:
+        lo, hi = float(output_limits[0]), float(output_limits[1])
+    except (TypeError, IndexError, ValueError):
+        raise ValueError(f"Parameter output_limits is {output_limits!r} but should be (lo, hi)") from None
+    if not lo < hi:
+        raise ValueError(f"Parameter output_limits is {output_limits!r} but should satisfy lo < hi")
+    info["limits"] = (lo, hi)
+
+    def raw(x, e):
+        return C[0, 0] * x[0] + C[0, 1] * x[1] + D[0, 0] * e
+
+    def outfcn(t, x, u, params):
+        e = float(np.asarray(u).reshape(-1)[0])
+        return np.array([min(max(raw(x, e), lo), hi)])
+
+    def updfcn(t, x, u, params):
+        e = float(np.asarray(u).reshape(-1)[0])
+        uu = raw(x, e)
+        hold = (uu > hi and e > 0.0) or (uu < lo and e < 0.0)
+        integ = x[0] if hold else x[0] + dt * e
+        return np.array([integ, a * x[1] + (1.0 - a) * e])
+
+    sys = ct.nlsys(updfcn, outfcn, states=["I", "f"], inputs=inputs, outputs=outputs, dt=dt, name=name)
+    sys._hystcomp = info
+    return sys
+
+
+# ----------------------------------------------------------------------------
+# wiring checks
+# ----------------------------------------------------------------------------
+def _feedthrough(sys):
+    info = getattr(sys, "_hystcomp", None)
+    if info is not None:
+        return bool(info.get("feedthrough", True))
+    if isinstance(sys, ct.LTI):
+        d = ct.ss(sys).D
+        return bool(np.any(np.asarray(d) != 0))
+    # probe: does the output move with the input at a zero state?
+    try:
+        x = np.zeros(sys.nstates)
+        y0 = np.asarray(sys._out(0.0, x, np.zeros(sys.ninputs)), dtype=float)
+        y1 = np.asarray(sys._out(0.0, x, np.full(sys.ninputs, 0.5)), dtype=float)
+        return not np.array_equal(y0, y1)
+    except Exception:
+        return True
+
+
+def _timebase(sys):
+    dt = sys.dt
+    if dt is None:
+        return None
+    if dt is True:
+        return True
+    return float(dt)
+
+
+def check_wiring(syslist, inplist, outlist):
+    """Check a name-connected loop before python-control sees it.
+
+    Signals with equal names are connected (python-control's
+    ``interconnect`` without ``connections``).  Raises :class:`WiringError`
+    naming the blocks for: duplicate block names, continuous blocks among
+    discrete ones, different sampling times, an input no block drives, an
+    unknown name in `inplist` / `outlist`, and an algebraic loop (a cycle of
+    blocks with feedthrough, which python-control reports late and vaguely).
+
+    Examples
+    --------
+    >>> import control as ct
+    >>> from hystcomp import PI
+    >>> act = hysteresis_system(PI([1.0], [1.0], p0=1.0), name="act", inputs="u", outputs="y")
+    >>> err = ct.summing_junction(["r", "-y"], "e", name="err")
+    >>> ctrl = ct.ss([], [], [], [[2.0]], 0.01, inputs="e", outputs="u", name="ctrl")
+    >>> check_wiring([act, err, ctrl], ["r"], ["y"])
+    Traceback (most recent call last):
+    ...
+    hystcomp.iosys.WiringError: algebraic loop: the blocks 'act' -> 'err' -> 'ctrl' form a cycle in which every block has feedthrough (its output depends on its input at the same sample), so no sample can be computed; put a block without feedthrough in the cycle (a discretised plant with D = 0, or a one-sample delay)
+    """
+    syslist = list(syslist)
+    inplist = [inplist] if isinstance(inplist, str) else list(inplist or [])
+    outlist = [outlist] if isinstance(outlist, str) else list(outlist or [])
+    names = [s.name for s in syslist]
+    dup = sorted({n for n in names if names.count(n) > 1})
+    if dup:
+        raise WiringError(f"blocks share the names {dup}; give every block its own name")
+    # timebases
+    cont = [s.name for s in syslist if _timebase(s) == 0.0 and s.nstates > 0]
+    disc = [(s.name, _timebase(s)) for s in syslist if _timebase(s) not in (None, True, 0.0)]
+    if cont and disc:
+        raise WiringError(
+            f"timebase mismatch: the blocks {cont} are continuous-time but {[n for n, _ in disc]} are "
+            f"discrete (dt = {disc[0][1]}); discretise the continuous ones with "
+            f"hystcomp.iosys.discretize(sys, {disc[0][1]}) (zero-order hold)"
+        )
+    dts = {}
+    for n, d in disc:
+        dts.setdefault(d, []).append(n)
+    if len(dts) > 1:
+        desc = "; ".join(f"{v} have dt = {k}" for k, v in dts.items())
+        raise WiringError(f"timebase mismatch: {desc}; build every block with the same sampling time")
+    if not disc and not cont:
+        pass
+    # signals
+    drivers = {}
+    for s in syslist:
+        for sig in s.output_labels:
+            drivers.setdefault(sig, []).append(s.name)
+    known = sorted(set(drivers) | {sig for s in syslist for sig in s.input_labels})
+    for sig in inplist:
+        base = sig.lstrip("-")
+        if not any(base in s.input_labels for s in syslist):
+            raise WiringError(
+                f"external input {sig!r} is not an input of any block; block inputs are "
+                f"{sorted({x for s in syslist for x in s.input_labels})}"
+            )
+    for sig in outlist:
+        base = sig.lstrip("-")
+        if base not in drivers and not any(base in s.input_labels for s in syslist):
+            raise WiringError(f"output {sig!r} is not a signal of the loop; known signals are {known}")
+    for s in syslist:
+        for sig in s.input_labels:
+            if sig not in drivers and sig not in inplist:
+                raise WiringError(
+                    f"input {sig!r} of block {s.name!r} is driven by no block output and is not an "
+                    f"external input; block outputs are {sorted(drivers)} (rename a signal or add "
+                    f"{sig!r} to inplist)"
+                )
+    # algebraic loops: cycles among feedthrough blocks
+    ft = {s.name: _feedthrough(s) for s in syslist}
+    succ = {s.name: [] for s in syslist}
+    for s in syslist:
+        for sig in s.output_labels:
+            for d in syslist:
+                if sig in d.input_labels and ft[s.name] and ft[d.name]:
+                    succ[s.name].append(d.name)
+    state = {}
+    stack = []
+
+    def visit(n):
+        state[n] = 1
+        stack.append(n)
+        for m in succ[n]:
+            if state.get(m) == 1:
+                cyc = stack[stack.index(m):]
+                raise WiringError(
+                    "algebraic loop: the blocks " + " -> ".join(repr(c) for c in cyc)
+                    + " form a cycle in which every block has feedthrough (its output depends on its "
+                    "input at the same sample), so no sample can be computed; put a block without "
+                    "feedthrough in the cycle (a discretised plant with D = 0, or a one-sample delay)"
+                )
+            if m not in state:
+                visit(m)
+        stack.pop()
+        state[n] = 2
+
+    for s in syslist:
+        if s.name not in state:
+            visit(s.name)
+
+
+def interconnect(syslist, inplist, outlist, name=None, **kwargs):
+    """:func:`control.interconnect` of name-connected blocks after
+    :func:`check_wiring`.
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> act = hysteresis_system(PI([1.0], [1.0], p0=1.0), name="act")
+    >>> stage = piezo_stage(dt=1e-4)
+    >>> sys = interconnect([act, stage], inplist=["v"], outlist=["y"], name="open")
+    >>> sys.dt, sys.nstates
+    (0.0001, 3)
+    """
+    check_wiring(syslist, inplist, outlist)
+    return ct.interconnect(list(syslist), inplist=inplist, outlist=outlist, name=name, **kwargs)
