@@ -49,7 +49,22 @@ class Envelope:
     Subclasses implement ``_value``, ``_derivative`` and ``_inverse`` on
     checked arrays and set ``domain`` and ``range``.  Built-in families also
     provide ``_kernel`` = (kind, params) so the compiled operator kernels
-    evaluate them inline.
+    evaluate them inline.  Calling an envelope, ``env(v)``, returns its
+    value gamma(v): a float for a scalar `v`, an array of the same shape
+    otherwise.
+
+    See Also
+    --------
+    Identity, Linear, Tanh, Atanh, Polynomial, Custom, Inverse
+
+    Examples
+    --------
+    >>> from hystcomp.envelopes import Envelope, Tanh
+    >>> g = Tanh(2.0, 1.0)
+    >>> isinstance(g, Envelope), g.is_bounded
+    (True, True)
+    >>> g([0.0, 0.5]).round(4).tolist()
+    [0.0, 0.9242]
     """
 
     #: (lower, upper) bounds of the inputs; open bounds are excluded.
@@ -65,12 +80,57 @@ class Envelope:
         return _same_shape(self._value(x), v)
 
     def derivative(self, v):
-        """Derivative gamma'(v)."""
+        """Derivative gamma'(v).
+
+        Parameters
+        ----------
+        v : float or array_like
+            Inputs inside the envelope's domain (finite).
+
+        Returns
+        -------
+        float or ndarray
+            gamma'(v), a float for a scalar `v`, else an array of `v`'s shape.
+
+        Raises
+        ------
+        ValueError
+            If a sample of `v` is not finite or lies outside the domain.
+
+        Examples
+        --------
+        >>> from hystcomp.envelopes import Linear
+        >>> Linear(3.0).derivative(1.5)
+        3.0
+        """
         x = self._check(v, "v")
         return _same_shape(self._derivative(x), v)
 
     def inverse(self, y):
-        """Inverse gamma^-1(y); `y` must lie inside the envelope's range."""
+        """Inverse gamma^-1(y).
+
+        Parameters
+        ----------
+        y : float or array_like
+            Values inside the envelope's range (finite; the range's ends are
+            excluded when the domain is open).
+
+        Returns
+        -------
+        float or ndarray
+            gamma^-1(y), a float for a scalar `y`, else an array of `y`'s shape.
+
+        Raises
+        ------
+        ValueError
+            If a value is not finite or lies outside the range.
+
+        Examples
+        --------
+        >>> from hystcomp.envelopes import Linear
+        >>> Linear(4.0).inverse(2.0)
+        0.5
+        """
         x = np.asarray(y, dtype=np.float64)
         _check_finite(self, x, "y")
         lo, hi = self.range
@@ -94,7 +154,30 @@ class Envelope:
         return bool(np.isfinite(self.range[0]) and np.isfinite(self.range[1]))
 
     def check_domain(self, v, name="v"):
-        """Raise ValueError if any sample of `v` lies outside the domain."""
+        """Raise ValueError if any sample of `v` lies outside the domain.
+
+        Parameters
+        ----------
+        v : float or array_like
+            Inputs to check.
+        name : str, optional
+            Name of the input shown in the error message (default ``"v"``).
+
+        Raises
+        ------
+        ValueError
+            Naming the first offending sample index, its value and the bound
+            it crosses, or the first sample that is not finite.
+
+        Examples
+        --------
+        >>> from hystcomp.envelopes import Atanh
+        >>> Atanh(1.0, 0.5).check_domain([0.0, 1.9])      # inside (-2, 2): no error
+        >>> Atanh(1.0, 0.5).check_domain([0.0, 2.0], name="u")
+        Traceback (most recent call last):
+        ...
+        ValueError: Atanh(a=1.0, b=0.5): input u[1] = 2.0 is outside the domain (-2.0, 2.0): it is >= the upper bound 2.0
+        """
         self._check(v, name)
 
     # -- plumbing -------------------------------------------------------------
@@ -213,6 +296,11 @@ class Identity(Envelope):
 class Linear(Envelope):
     """gamma(v) = k v with k > 0 (thesis section 5.3 uses k = 3).
 
+    Parameters
+    ----------
+    k : float
+        The slope, > 0.
+
     Examples
     --------
     >>> Linear(3.0).inverse_envelope()
@@ -250,6 +338,15 @@ class Tanh(Envelope):
 
     Its range is (-a, a), so a modified generalized play with it saturates at
     +-a (thesis section 3.5, eq. 29).
+
+    Parameters
+    ----------
+    a : float
+        Saturation level (amplitude), > 0.
+    b : float
+        Input gain, > 0.
+    c : float, optional
+        Input offset inside the tanh (default 0).
 
     Examples
     --------
@@ -297,6 +394,15 @@ class Atanh(Envelope):
 
     Thesis section 5.4 uses gamma = atanh(0.5 v), i.e. ``Atanh(1, 0.5)``,
     whose inverse is beta = 2 tanh(v).
+
+    Parameters
+    ----------
+    a : float
+        Output gain, > 0.
+    b : float
+        Input gain, > 0; the domain is the open interval (-1/b, 1/b).
+    offset : float, optional
+        Added to the value (default 0).
 
     Examples
     --------
@@ -407,6 +513,32 @@ class Polynomial(Envelope):
         return _vkernel(kind, prm, y, _k.env_inverse)
 
     def inverse(self, y):
+        """Inverse gamma^-1(y) on the closed range [gamma(lo), gamma(hi)].
+
+        Solved per sample by a safeguarded Newton iteration in the compiled
+        kernels.
+
+        Parameters
+        ----------
+        y : float or array_like
+            Values inside the closed range (its ends included).
+
+        Returns
+        -------
+        float or ndarray
+            gamma^-1(y), a float for a scalar `y`, else an array of `y`'s shape.
+
+        Raises
+        ------
+        ValueError
+            If a value is not finite or lies outside the range.
+
+        Examples
+        --------
+        >>> g = Polynomial([0.0, 1.0, 0.0, 1.0], interval=(-1, 1))   # v + v^3
+        >>> round(float(g.inverse(2.0)), 12)                        # range end
+        1.0
+        """
         x = np.asarray(y, dtype=np.float64)
         _check_finite(self, x, "y")
         lo, hi = self.range
@@ -505,6 +637,11 @@ class Inverse(Envelope):
     envelopes return closed forms from ``inverse_envelope()``; this class
     serves the others (Polynomial, Custom).
 
+    Parameters
+    ----------
+    envelope : Envelope
+        The envelope gamma to invert.
+
     Examples
     --------
     >>> b = Inverse(Polynomial([0, 1, 0, 1], interval=(-2, 2)))
@@ -550,6 +687,24 @@ def extended_values(env, x):
 
     Inside operators an envelope boundary that leaves the domain never binds
     (for Atanh the value tends to +-inf there anyway).
+
+    Parameters
+    ----------
+    env : Envelope
+        The envelope gamma.
+    x : array_like
+        Inputs, anywhere on the real line.
+
+    Returns
+    -------
+    ndarray
+        gamma(x) inside the domain, -inf below it and +inf above it, with the
+        shape of `x`.
+
+    Examples
+    --------
+    >>> extended_values(Atanh(1.0, 0.5), [-3.0, 0.0, 2.0]).tolist()
+    [-inf, 0.0, inf]
     """
     x = np.asarray(x, dtype=np.float64)
     lo, hi = env.domain
@@ -616,6 +771,22 @@ _REGISTRY = {
 
 def envelope_from_dict(d):
     """Rebuild an envelope written by ``Envelope.to_dict()``.
+
+    Parameters
+    ----------
+    d : dict or Envelope
+        A description with a ``"type"`` key (``"Identity"``, ``"Linear"``,
+        ``"Tanh"``, ``"Atanh"``, ``"Polynomial"`` or ``"Inverse"``) and the
+        constructor's parameters; an Envelope is returned unchanged.
+
+    Returns
+    -------
+    Envelope
+
+    Raises
+    ------
+    ValueError
+        If `d` is not such a dict or its type is unknown.
 
     Examples
     --------

@@ -35,7 +35,25 @@ __all__ = [
 
 
 class UnreachableWarning(UserWarning):
-    """Some targets lie outside the outputs the model can reach; they were clipped."""
+    """Some targets lie outside the outputs the model can reach; they were clipped.
+
+    Issued by :meth:`ExactInverse.simulate` (with ``on_unreachable="clip"``)
+    and :meth:`GPIInverse.simulate`; the message names the count and the first
+    sample index.  Filter it with the :mod:`warnings` module to make it an
+    error or silence it.
+
+    Examples
+    --------
+    >>> import warnings
+    >>> from hystcomp import MGPI
+    >>> from hystcomp.envelopes import Tanh
+    >>> model = MGPI([1.0], [0.5], p0=1.0, envelope=Tanh(2.0, 1.0))   # |y| < 3
+    >>> with warnings.catch_warnings(record=True) as caught:
+    ...     warnings.simplefilter("always")
+    ...     v = model.exact_inverse().simulate([0.0, 1.0, 5.0])
+    >>> caught[0].category is UnreachableWarning
+    True
+    """
 
 
 def mgpi_inverse_parameters(thresholds, weights, p0, envelope):
@@ -314,6 +332,14 @@ class GPIInverse:
     thresholds and weights and p0 = k, and its Krejci-Kuhnen inverse is
     exact, so this compensator is exact where gamma^-1 is defined.  Targets
     whose PI^-1 falls outside gamma's range are clipped and reported.
+    Usually made by :meth:`hystcomp.GPI.inverse`.  Its state is the state of
+    the inverse PI model.
+
+    Parameters
+    ----------
+    model : GPI
+        The GPI model to invert, with gl = gr = gamma and H = k gamma, k > 0
+        (see :meth:`hystcomp.GPI.is_invertible`).
 
     Examples
     --------
@@ -340,11 +366,69 @@ class GPIInverse:
         return self.pi_inverse.default_state()
 
     def state_for(self, model_state):
-        """Initial state matching a state of the GPI model (Krejci-Kuhnen mapping)."""
+        """Initial state matching a state of the GPI model (Krejci-Kuhnen mapping).
+
+        Parameters
+        ----------
+        model_state : array_like, shape (N,)
+            A state of the GPI model (its generalized play outputs).
+
+        Returns
+        -------
+        ndarray, shape (N,)
+            The compensator state with which it inverts the model started in
+            `model_state` (see :meth:`hystcomp.PI.inverse_state`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import GPI
+        >>> from hystcomp.envelopes import Tanh
+        >>> gpi = GPI([0.5, 1.0], [0.4, 0.2], Tanh(2, 0.5), Tanh(2, 0.5), H=Tanh(2, 0.5))
+        >>> _, s = gpi.simulate([0.0, 2.0, 0.5], return_state=True)
+        >>> comp = gpi.inverse()
+        >>> u = gpi.simulate(np.linspace(0.5, -1.0, 20), initial_state=s)
+        >>> v = comp.simulate(u, initial_state=comp.state_for(s))
+        >>> bool(np.allclose(v, np.linspace(0.5, -1.0, 20), atol=1e-10))
+        True
+        """
         return self.pi.inverse_state(model_state)
 
     def simulate(self, u, initial_state=None, return_state=False):
-        """Compensator output v with ``model.simulate(v) == u``."""
+        """Compensator output v with ``model.simulate(v) == u``.
+
+        Parameters
+        ----------
+        u : array_like, shape (n,)
+            Desired model outputs.
+        initial_state : array_like, optional
+            State of the inverse PI model before the first sample; default
+            its virgin state (see :meth:`state_for`).
+        return_state : bool, optional
+            Also return the final state.
+
+        Returns
+        -------
+        v : ndarray, shape (n,)
+            Compensator output (the model's input).
+        state : ndarray
+            Final state (only if `return_state`).
+
+        Warns
+        -----
+        UnreachableWarning
+            When some targets need gamma(v) outside gamma's range; they are
+            clipped (``last_unreachable`` holds the count and first index).
+
+        Examples
+        --------
+        >>> from hystcomp import GPI
+        >>> from hystcomp.envelopes import Linear
+        >>> gpi = GPI([1.0], [0.5], Linear(2.0), Linear(2.0), H=Linear(2.0))
+        >>> v, s = gpi.inverse().simulate([0.0, 5.5], return_state=True)
+        >>> v.round(12).tolist()          # 2 v + 0.5 (2 v - 1) = 5.5 at v = 2
+        [0.0, 2.0]
+        """
         target = as_signal(u, "u")
         s, state = self.pi_inverse.simulate(target, initial_state=initial_state, return_state=True)
         lo, hi = self.envelope.range
@@ -368,7 +452,19 @@ class TrackingError(dict):
     """Errors of ``model o compensator`` against the reference (a dict).
 
     Keys: ``rms``, ``max`` (absolute), ``rms_percent``, ``max_percent`` (of
-    the reference's span), ``span``.
+    the reference's span), ``span`` and ``error`` (the error samples).
+    Returned by :func:`tracking_error`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> m = PI([1.0], [0.5], p0=1.0)
+    >>> err = tracking_error(m, PI([1.0], [0.0], p0=1.0), np.array([0.0, 2.0, 0.0]))
+    >>> err          # the identity as compensator leaves the play term 0.5 F_1[u]
+    TrackingError(rms=0.4082, max=0.5, rms_percent=20.41%, max_percent=25%)
+    >>> err["error"].tolist()
+    [0.0, 0.5, 0.5]
     """
 
     def __repr__(self):

@@ -54,7 +54,23 @@ __all__ = [
 
 
 class WiringError(ValueError):
-    """A loop is wired wrongly (timebases, algebraic loop, unknown signal)."""
+    """A loop is wired wrongly (timebases, algebraic loop, unknown signal).
+
+    Raised by :func:`check_wiring`, :func:`interconnect` and
+    :func:`discretize`; a subclass of ``ValueError`` whose message names the
+    blocks at fault.
+
+    Examples
+    --------
+    >>> import control as ct
+    >>> a = ct.ss([], [], [], [[1.0]], 0.01, inputs="u", outputs="y", name="a")
+    >>> b = ct.ss([], [], [], [[1.0]], 0.02, inputs="y", outputs="z", name="b")
+    >>> try:
+    ...     check_wiring([a, b], ["u"], ["z"])
+    ... except WiringError as err:
+    ...     print(err)
+    timebase mismatch: ['a'] have dt = 0.01; ['b'] have dt = 0.02; build every block with the same sampling time
+    """
 
 
 # ----------------------------------------------------------------------------
@@ -244,6 +260,7 @@ def mean_gain(model, input_range, n_samples=2001):
     Parameters
     ----------
     model : object with ``simulate``
+        The hysteresis model (any object following the model protocol).
     input_range : (float, float)
         (lo, hi) with lo < hi: the actuator input range of the study.
     n_samples : int
@@ -292,6 +309,7 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
     dt : True or float
         Sampling time; True inherits the loop's.
     name : str, optional
+        Block name (python-control makes one up if None).
     inputs, outputs : str
         Signal names (compensator input, actuator command).
     input_range : (float, float), optional
@@ -367,6 +385,16 @@ def initial_state(sys):
     """X0 for ``ct.input_output_response``: every hystcomp block in its
     default (virgin) state, every other state 0.
 
+    Parameters
+    ----------
+    sys : control.InputOutputSystem
+        A block or an interconnection of blocks (searched recursively, in
+        the order of its ``syslist``).
+
+    Returns
+    -------
+    ndarray, shape (sys.nstates,)
+
     Examples
     --------
     >>> from hystcomp import PI
@@ -390,6 +418,25 @@ def initial_state(sys):
 def discretize(sys, dt, name=None):
     """Zero-order-hold discretisation of a continuous LTI system, keeping
     its signal names (and its name unless `name` is given).
+
+    Parameters
+    ----------
+    sys : control.LTI
+        A continuous-time system (a discrete one with the same `dt` is
+        returned as it is).
+    dt : float
+        Sampling time, > 0.
+    name : str, optional
+        Name of the discrete system; default the name of `sys`.
+
+    Returns
+    -------
+    control.StateSpace
+
+    Raises
+    ------
+    WiringError
+        If `sys` is already discrete with another sampling time.
 
     Examples
     --------
@@ -475,6 +522,7 @@ def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", 
         the error would drive it further (conditional integration, an
         anti-windup scheme); the controller becomes a NonlinearIOSystem.
     name, inputs, outputs : str
+        Block name and signal names (error in, command out).
 
     Returns
     -------
@@ -566,6 +614,20 @@ def check_wiring(syslist, inplist, outlist):
     discrete ones, different sampling times, an input no block drives, an
     unknown name in `inplist` / `outlist`, and an algebraic loop (a cycle of
     blocks with feedthrough, which python-control reports late and vaguely).
+
+    Parameters
+    ----------
+    syslist : list of control.InputOutputSystem
+        The blocks, each with its own name.
+    inplist : str or list of str
+        External inputs of the loop (signal names; a leading "-" is allowed).
+    outlist : str or list of str
+        Outputs of the loop (signal names; a leading "-" is allowed).
+
+    Raises
+    ------
+    WiringError
+        Naming the blocks and signals at fault.
 
     Examples
     --------
@@ -664,6 +726,28 @@ def check_wiring(syslist, inplist, outlist):
 def interconnect(syslist, inplist, outlist, name=None, **kwargs):
     """:func:`control.interconnect` of name-connected blocks after
     :func:`check_wiring`.
+
+    Parameters
+    ----------
+    syslist : list of control.InputOutputSystem
+        The blocks; signals with equal names are connected.
+    inplist, outlist : str or list of str
+        External inputs and outputs of the interconnection (signal names).
+    name : str, optional
+        Name of the interconnected system.
+    **kwargs
+        Passed on to :func:`control.interconnect`.
+
+    Returns
+    -------
+    control.InterconnectedSystem or control.StateSpace
+        A StateSpace system when every block is linear (python-control's
+        choice).
+
+    Raises
+    ------
+    WiringError
+        From :func:`check_wiring`.
 
     Examples
     --------

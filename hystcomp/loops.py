@@ -84,20 +84,41 @@ _LABELS = {
 class Loop:
     """One scenario: the python-control system and its ingredients.
 
-    Attributes
+    Made by :func:`build_loop` and :func:`build_scenarios`; every parameter
+    is kept as the attribute of the same name.
+
+    Parameters
     ----------
     scenario : str
         One of :data:`SCENARIOS`.
     name : str
+        Name of the loop (and of its interconnected system).
     system : control.InterconnectedSystem
-        Input ``r``, outputs ``y``, ``w``, ``v``.
+        Input: the reference ``r``; outputs: ``y`` (plant output), ``w``
+        (actuator output) and ``v`` (actuator input), in this order and
+        named, so responses can be indexed by signal name.
     dt : float
+        Sampling time of every block.
     hysteresis : HysteresisModel
+        The actuator model.
     compensator : control.NonlinearIOSystem or None
         The compensator block (``.compensator``, ``.nominal_gain``).
     controller, plant : python-control systems or None
         Discrete; signals renamed to the loop's.
     feedforward_gain : float
+        Gain of the reference path (``1 / (k_nom G(1))`` by default).
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import piezo_stage
+    >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
+    >>> loop
+    Loop('open_loop', name='open_loop', dt=0.0001)
+    >>> loop.system.ninputs, loop.system.noutputs        # r in; y, w, v out
+    (1, 3)
+    >>> loop.initial_state().tolist()       # play output, stage position and velocity
+    [0.0, 0.0, 0.0]
     """
 
     def __init__(self, scenario, name, system, dt, hysteresis, compensator, controller, plant,
@@ -119,7 +140,36 @@ class Loop:
     def simulate(self, t, reference, engine="python-control"):
         """Response to a reference: ``engine="python-control"`` runs
         :func:`control.input_output_response`, ``"compiled"``
-        :func:`simulate_loop`."""
+        :func:`simulate_loop`.
+
+        Parameters
+        ----------
+        t : array_like, shape (n,)
+            Uniform time vector with the loop's step `dt`.
+        reference : array_like, shape (n,)
+            Reference samples r[k].
+        engine : {"python-control", "compiled"}, optional
+            Who simulates; both give the same numbers to rounding, the
+            compiled loop about a thousand times faster.
+
+        Returns
+        -------
+        control.TimeResponseData
+            Outputs ``y``, ``w``, ``v``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> from hystcomp.iosys import piezo_stage
+        >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
+        >>> t = np.arange(40) * 1e-4
+        >>> r = np.sin(2 * np.pi * 50 * t)
+        >>> a = loop.simulate(t, r).outputs
+        >>> b = loop.simulate(t, r, engine="compiled").outputs
+        >>> a.shape, bool(np.allclose(a, b, rtol=0, atol=1e-12))
+        ((3, 40), True)
+        """
         check_choice(engine, "engine", ("python-control", "compiled"))
         if engine == "compiled":
             return simulate_loop(self, reference, t)
@@ -217,6 +267,25 @@ def build_loop(scenario, hysteresis, plant, controller=None, compensator=None, d
     Returns
     -------
     Loop
+
+    Raises
+    ------
+    ValueError
+        If the scenario needs a controller or a compensator that is missing.
+    WiringError
+        For mismatched sampling times or a plant with feedthrough in a
+        feedback scenario (an algebraic loop).
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import compensator_system, piezo_stage, pid
+    >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+    >>> loop = build_loop("feedback_compensated", act, piezo_stage(),
+    ...                   controller=pid(0.0, 300.0, 0.0, dt=1e-4),
+    ...                   compensator=compensator_system(act), dt=1e-4)
+    >>> loop.scenario, loop.system.nstates     # plays 2, stage 2, PID 2, inverse 3
+    ('feedback_compensated', 9)
     """
     check_choice(scenario, "scenario", SCENARIOS)
     need_ctrl, need_comp = _NEEDS[scenario]
@@ -261,7 +330,8 @@ def build_loop(scenario, hysteresis, plant, controller=None, compensator=None, d
                    ct.summing_junction(["r", "-y"], "e", name="error"), ctrl,
                    ct.summing_junction(["uff", "uc"], "u", name="sum"), comp]
     name = name or scenario
-    system = interconnect(blocks, inplist=["r"], outlist=["y", "w", "v"], name=name)
+    system = interconnect(blocks, inplist=["r"], outlist=["y", "w", "v"], name=name,
+                          inputs=["r"], outputs=["y", "w", "v"])
     return Loop(scenario, name, system, dt, hysteresis, comp if _NEEDS[scenario][1] else None, ctrl, stage, ff)
 
 
@@ -269,10 +339,41 @@ def build_scenarios(hysteresis, plant, controller=None, compensator=None, dt=Non
                     feedforward_gain="auto", scenarios=None):
     """Every scenario the given blocks allow (or those named in `scenarios`).
 
+    Parameters
+    ----------
+    hysteresis : HysteresisModel
+        The actuator (any model with the simulate protocol).
+    plant : python-control LTI system
+        SISO; continuous ones are discretised (zero-order hold) at `dt`.
+    controller : LTI system or :func:`hystcomp.iosys.pid`, optional
+        Enables the feedback scenarios.
+    compensator : compensator_system block or compensator object, optional
+        Enables the compensated scenarios.
+    dt : float, optional
+        Sampling time; default the controller's or the plant's.
+    feedforward_gain : "auto" or float
+        Gain of the reference path; "auto" is ``1 / (k_nom G(1))``.
+    scenarios : iterable of str, optional
+        Scenarios to build (each must have its blocks); default every
+        scenario the given blocks allow.
+
     Returns
     -------
     dict
         scenario name -> :class:`Loop`, in the order of :data:`SCENARIOS`.
+
+    See Also
+    --------
+    build_loop
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import compensator_system, piezo_stage
+    >>> act = PI([1.0], [0.5], p0=1.0)
+    >>> loops = build_scenarios(act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
+    >>> list(loops)                            # no controller: no feedback scenarios
+    ['open_loop', 'feedforward']
     """
     names = SCENARIOS if scenarios is None else list(scenarios)
     out = {}
@@ -362,6 +463,7 @@ def simulate_loop(loop, reference, t=None):
     Parameters
     ----------
     loop : Loop
+        The loop to run.
     reference : array_like, shape (n,)
         Reference samples r[k] at t[k] = t0 + k dt.
     t : array_like, optional
@@ -378,6 +480,21 @@ def simulate_loop(loop, reference, t=None):
         For blocks without a compiled kernel (e.g. a GPI actuator or a
         :class:`~hystcomp.inverses.GPIInverse`): there is no Python
         fallback here; run ``loop.simulate(t, reference)`` (python-control).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import compensator_system, piezo_stage
+    >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+    >>> loop = build_loop("feedforward", act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
+    >>> r = 2 * np.sin(2 * np.pi * 20 * np.arange(5000) * 1e-4)
+    >>> resp = simulate_loop(loop, r)
+    >>> resp.output_labels, resp.outputs.shape
+    (['y', 'w', 'v'], (3, 5000))
+    >>> w = resp.outputs[1]                    # the compensated actuator follows r exactly
+    >>> bool(np.max(np.abs(w - r)) < 1e-9)
+    True
     """
     if not isinstance(loop, Loop):
         raise TypeError(f"Parameter loop is {type(loop).__name__}; expected an hystcomp.loops.Loop")
@@ -440,8 +557,23 @@ def loop_width(reference, output, n_bins=100):
     hysteresis loop for an uncompensated actuator (a pure lag also opens
     the loop).
 
+    Parameters
+    ----------
+    reference : array_like, shape (n,)
+        Reference samples r.
+    output : array_like, shape (n,)
+        Output samples y.
+    n_bins : int, optional
+        Number of bins over the reference's span (default 100).
+
+    Returns
+    -------
+    float
+        The loop width, in output units.
+
     Examples
     --------
+    >>> import numpy as np
     >>> r = np.sin(np.linspace(0, 4 * np.pi, 4001))
     >>> round(loop_width(r, r + 0.1 * np.sign(np.gradient(r))), 6)
     0.2
@@ -467,7 +599,10 @@ _FIELDS = ("scenario", "label", "engine", "rms", "max", "rms_percent", "max_perc
 class Comparison:
     """Result of :func:`compare`.
 
-    Attributes
+    Printing it shows the table; every parameter is kept as the attribute
+    of the same name.
+
+    Parameters
     ----------
     rows : list of dict
         One per scenario: ``scenario``, ``label``, ``engine``, ``rms``,
@@ -477,6 +612,20 @@ class Comparison:
     responses : dict
         scenario name -> :class:`control.TimeResponseData`.
     reference, t : ndarray
+        The reference and its time vector.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import piezo_stage
+    >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
+    >>> t = np.arange(2000) * 1e-4
+    >>> result = compare([loop], 2 * np.sin(2 * np.pi * 5 * t), t)
+    >>> isinstance(result, Comparison), [row["scenario"] for row in result.rows]
+    (True, ['open_loop'])
+    >>> print(str(result).splitlines()[0])
+    scenario               engine                RMS       max    RMS %    max %     width  width %
     """
 
     def __init__(self, rows, responses, reference, t):
@@ -486,6 +635,29 @@ class Comparison:
         self.t = t
 
     def row(self, name):
+        """The table row of one scenario.
+
+        Parameters
+        ----------
+        name : str
+            Scenario (loop) name.
+
+        Returns
+        -------
+        dict
+            See :class:`Comparison`'s `rows`.
+
+        Raises
+        ------
+        KeyError
+            If no row has that name (the message lists the names).
+
+        Examples
+        --------
+        >>> c = Comparison([{"scenario": "open_loop", "rms": 0.5}], {}, None, None)
+        >>> c.row("open_loop")["rms"]
+        0.5
+        """
         for row in self.rows:
             if row["scenario"] == name:
                 return row
@@ -504,7 +676,26 @@ class Comparison:
         return "\n".join(lines)
 
     def to_csv(self, path, extra=None):
-        """Write the table (with optional constant columns `extra`, a dict)."""
+        """Write the table as CSV.
+
+        Parameters
+        ----------
+        path : str or path-like
+            The CSV file to write (overwritten).
+        extra : dict, optional
+            Constant columns put before the table's (e.g. the model's name).
+
+        Examples
+        --------
+        >>> import os, tempfile
+        >>> row = dict(scenario="open_loop", label="open loop", engine="compiled", rms=0.1,
+        ...            max=0.2, rms_percent=2.5, max_percent=5.0, loop_width=0.3,
+        ...            loop_width_percent=7.5, seconds=0.01)
+        >>> path = os.path.join(tempfile.mkdtemp(), "loops.csv")
+        >>> Comparison([row], {}, None, None).to_csv(path, extra={"model": "PI"})
+        >>> print(open(path).read().splitlines()[1])
+        PI,open_loop,open loop,compiled,0.1,0.2,2.5,5.0,0.3,7.5,0.01
+        """
         extra = dict(extra or {})
         with open(path, "w", newline="") as fh:
             writer = csv.DictWriter(fh, fieldnames=list(extra) + list(_FIELDS))
@@ -519,7 +710,9 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
     Parameters
     ----------
     scenarios : dict of Loop, or iterable of Loop
+        The loops to run (a dict from :func:`build_scenarios`).
     reference : array_like, shape (n,)
+        Reference samples r.
     t : array_like, shape (n,)
         Uniform time vector with the loops' step.
     engine : {"auto", "compiled", "python-control"}
@@ -532,6 +725,20 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
     -------
     Comparison
         Table rows and each scenario's :class:`control.TimeResponseData`.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import compensator_system, piezo_stage
+    >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+    >>> loops = build_scenarios(act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
+    >>> t = np.arange(2000) * 1e-4
+    >>> result = compare(loops, 2 * np.sin(2 * np.pi * 5 * t), t)
+    >>> [row["engine"] for row in result.rows]
+    ['compiled', 'compiled']
+    >>> bool(result.row("feedforward")["loop_width"] < result.row("open_loop")["loop_width"] / 10)
+    True
     """
     check_choice(engine, "engine", ("auto", "compiled", "python-control"))
     loops = list(scenarios.values()) if isinstance(scenarios, dict) else list(scenarios)
@@ -565,14 +772,34 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
 def plot_comparison(comparison, title=None, scenarios=None, time_window=None):
     """Tracking, tracking error and y-vs-r loops of a :class:`Comparison`.
 
-    `time_window` (t0, t1) limits the two time panels (the loops panel
-    shows every sample).
+    Parameters
+    ----------
+    comparison : Comparison
+        The result of :func:`compare`.
+    title : str, optional
+        Figure title.
+    scenarios : iterable of str, optional
+        Scenarios to draw, in this order; default every row.
+    time_window : (float, float), optional
+        (t0, t1) limits of the two time panels (the loops panel shows every
+        sample).
 
     Returns
     -------
     matplotlib.figure.Figure
         Three panels: reference and outputs in time, errors y - r in time,
         output against reference.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> from hystcomp.iosys import piezo_stage
+    >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
+    >>> t = np.arange(1000) * 1e-4
+    >>> fig = plot_comparison(compare([loop], np.sin(2 * np.pi * 10 * t), t), title="open loop")
+    >>> [ax.get_title() for ax in fig.axes]
+    ['tracking', 'tracking error', 'y against r']
     """
     from .plotting import new_figure
 

@@ -39,6 +39,12 @@ class Invertibility:
     """Answer of ``model.is_invertible()``: truthy when the analytic inverse
     exists, with the reasons when it does not.
 
+    Parameters
+    ----------
+    reasons : iterable of str
+        Why the analytic inverse does not exist; empty when it does.  Kept
+        as the list ``reasons``.
+
     Examples
     --------
     >>> from hystcomp import PI
@@ -79,7 +85,25 @@ class HysteresisModel:
     """Common interface of the hysteresis models.
 
     Subclasses implement ``_simulate(v, state)`` (state modified in place)
-    and ``default_state()``.
+    and ``default_state()``.  Every model follows the same protocol:
+    ``simulate(v, initial_state=None, return_state=False)``, ``n_states``,
+    ``default_state()``, ``to_dict()`` (read back by :func:`model_from_dict`),
+    ``output_bounds()``, ``is_invertible()`` and ``exact_inverse()``.
+
+    See Also
+    --------
+    PI, StopPI, GPI, MGPI
+
+    Examples
+    --------
+    >>> from hystcomp import PI
+    >>> from hystcomp.models import HysteresisModel
+    >>> m = PI([1.0], [0.5], p0=1.0)
+    >>> isinstance(m, HysteresisModel), m.n_states
+    (True, 1)
+    >>> y, state = m.simulate([0.0, 2.0, 1.0], return_state=True)
+    >>> y.tolist(), state.tolist()
+    ([0.0, 2.5, 1.5], [1.0])
     """
 
     #: number of entries of the explicit state
@@ -107,6 +131,20 @@ class HysteresisModel:
             Output samples.
         state : ndarray
             Final state (only if `return_state`).
+
+        Examples
+        --------
+        Simulating in two chunks, passing the state on, gives the one-shot
+        result:
+
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+        >>> v = 3 * np.sin(np.linspace(0, 10, 100))
+        >>> y1, s = m.simulate(v[:40], return_state=True)
+        >>> y2 = m.simulate(v[40:], initial_state=s)
+        >>> bool(np.array_equal(np.concatenate([y1, y2]), m.simulate(v)))
+        True
         """
         x = as_signal(v, "v")
         self._check_input_domain(x)
@@ -126,6 +164,22 @@ class HysteresisModel:
 
         The output when the input rises monotonically from 0 to `r` from the
         virgin state.  Negative `r` gives the curve for a falling input.
+
+        Parameters
+        ----------
+        r : float or array_like
+            End points of the monotone input.
+
+        Returns
+        -------
+        float or ndarray
+            phi(r), a float for a scalar `r`, else an array of `r`'s shape.
+
+        Examples
+        --------
+        >>> from hystcomp import StopPI
+        >>> StopPI([1.0], [1.0], p0=1.0).loading_curve([0.5, 2.0]).tolist()
+        [1.0, 3.0]
         """
         rr = np.asarray(r, dtype=np.float64)
         flat = rr.reshape(-1)
@@ -138,6 +192,32 @@ class HysteresisModel:
         """The exact inverse compensator (per-sample monotone solve).
 
         See :class:`hystcomp.inverses.ExactInverse`.
+
+        Parameters
+        ----------
+        on_unreachable : {"clip", "raise"}, optional
+            What to do with a target the model cannot reach: clip it to the
+            nearest reachable output with an
+            :class:`~hystcomp.inverses.UnreachableWarning` (default), or raise
+            ``ValueError``.
+        input_limits : (float, float), optional
+            Bounds of the compensator's output (e.g. an amplifier's voltage
+            range); default from the envelopes' domains and saturation.
+
+        Returns
+        -------
+        ExactInverse
+            A compensator: ``simulate(u, initial_state=None, return_state=False)``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import StopPI
+        >>> m = StopPI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+        >>> u = 2 * np.sin(np.linspace(0, 10, 200))
+        >>> comp = m.exact_inverse()
+        >>> bool(np.max(np.abs(m.simulate(comp.simulate(u)) - u)) < 1e-9)
+        True
         """
         from .inverses import ExactInverse  # inverses build on models
 
@@ -288,7 +368,28 @@ class MGPI(HysteresisModel):
         return np.zeros(self._r.size + 1)
 
     def operator_outputs(self, state):
-        """Operator outputs w_i for a state (for symmetric models w_i = gamma(z_i))."""
+        """Operator outputs w_i for a state (for symmetric models w_i = gamma(z_i)).
+
+        Parameters
+        ----------
+        state : array_like, shape (n_states,)
+            A state of this model (see :meth:`simulate`).
+
+        Returns
+        -------
+        ndarray
+            The operator outputs: w_1..w_N for a symmetric model, w_0..w_N
+            (the state itself) for an asymmetric one.
+
+        Examples
+        --------
+        >>> from hystcomp import MGPI
+        >>> from hystcomp.envelopes import Linear
+        >>> m = MGPI([1.0], [0.5], p0=1.0, envelope=Linear(2.0))
+        >>> _, s = m.simulate([0.0, 3.0], return_state=True)
+        >>> s.tolist(), m.operator_outputs(s).tolist()     # z = 3 - 1, w = 2 z
+        ([2.0], [4.0])
+        """
         s = as_state(state, self.n_states, "state")
         if self.symmetric:
             return _extended(self.envelope_left, s)
@@ -328,7 +429,29 @@ class MGPI(HysteresisModel):
 
     def operator_responses(self, v, initial_state=None):
         """Outputs of every operator, shape (n, N+1): column 0 is the r = 0
-        operator, column i the operator of threshold r_i (for figures)."""
+        operator, column i the operator of threshold r_i (for figures).
+
+        Parameters
+        ----------
+        v : array_like, shape (n,)
+            Input samples.
+        initial_state : array_like, optional
+            State of the model before the first sample; default the virgin
+            state.
+
+        Returns
+        -------
+        ndarray, shape (n, N+1)
+            Operator outputs (unweighted).
+
+        Examples
+        --------
+        >>> from hystcomp import MGPI
+        >>> from hystcomp.envelopes import Linear
+        >>> m = MGPI([1.0], [0.5], p0=1.0, envelope=Linear(2.0))
+        >>> m.operator_responses([0.0, 3.0, 2.0]).tolist()
+        [[0.0, 0.0], [6.0, 4.0], [4.0, 4.0]]
+        """
         x = as_signal(v, "v")
         self._check_input_domain(x)
         r_all = np.concatenate([[0.0], self._r])
@@ -341,7 +464,27 @@ class MGPI(HysteresisModel):
 
     def loading_curve(self, r):
         """Initial loading curve (eq. 37): phi(r) = p0 gamma(r) + sum_{r_i < r} p_i gamma(r - r_i)
-        for gamma(0) = 0, evaluated exactly from the operator definition."""
+        for gamma(0) = 0, evaluated exactly from the operator definition.
+
+        Parameters
+        ----------
+        r : float or array_like
+            End points of an input rising monotonically from 0 (falling for
+            negative `r`).
+
+        Returns
+        -------
+        float or ndarray
+            phi(r), a float for a scalar `r`, else an array of `r`'s shape.
+
+        Examples
+        --------
+        >>> from hystcomp import MGPI
+        >>> from hystcomp.envelopes import Linear
+        >>> m = MGPI([1.0], [0.5], p0=1.0, envelope=Linear(2.0))
+        >>> m.loading_curve(3.0)        # 1 * 2 * 3 + 0.5 * 2 * (3 - 1)
+        8.0
+        """
         return super().loading_curve(r)
 
     def output_bounds(self):
@@ -474,6 +617,15 @@ class PI(MGPI):
     ``f_r(v, w) = max{v - r, min{v + r, w}}`` (eq. 13).  The state is the
     play outputs.  An MGPI model with the identity envelope.
 
+    Parameters
+    ----------
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all > 0.
+    weights : array_like, shape (N,)
+        p_1..p_N (negative values are legal: inverses have them).
+    p0 : float
+        Weight of the linear term p0 v.
+
     Examples
     --------
     >>> import numpy as np
@@ -491,7 +643,27 @@ class PI(MGPI):
         super().__init__(thresholds, weights, p0)
 
     def loading_curve(self, r):
-        """phi(r) = p0 r + sum_i p_i max(r - r_i, 0) for r >= 0 (eq. 30)."""
+        """phi(r) = p0 r + sum_i p_i max(r - r_i, 0) for r >= 0 (eq. 30).
+
+        Odd in `r`: ``phi(-r) = -phi(r)`` (a falling input from the virgin
+        state).
+
+        Parameters
+        ----------
+        r : float or array_like
+            End points of the monotone input.
+
+        Returns
+        -------
+        float or ndarray
+            phi(r), a float for a scalar `r`, else an array of `r`'s shape.
+
+        Examples
+        --------
+        >>> from hystcomp import PI
+        >>> PI([1.0, 2.0], [0.5, 0.25], p0=1.0).loading_curve([1.0, 3.0, -3.0]).tolist()
+        [1.0, 4.25, -4.25]
+        """
         rr = np.asarray(r, dtype=np.float64)
         a = np.abs(rr)[..., None]
         val = self.p0 * np.abs(rr) + (np.maximum(a - self._r, 0.0) * self._p).sum(axis=-1)
@@ -548,6 +720,28 @@ class PI(MGPI):
         For play outputs z_i of the model, the inverse's plays start at
         ``z'_j = (p0 + p_1 + ... + p_j) z_j + sum_{i > j} p_i z_i``, so that
         ``inverse.simulate(model.simulate(v, s), inverse_state(s)) == v``.
+
+        Parameters
+        ----------
+        state : array_like, shape (N,)
+            Play outputs z_1..z_N of this model.
+
+        Returns
+        -------
+        ndarray, shape (N,)
+            The matching initial state of :meth:`inverse`.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+        >>> _, s = m.simulate([0.0, 2.5, -0.5], return_state=True)
+        >>> v = np.linspace(-0.5, 3.0, 50)
+        >>> inv = m.inverse()
+        >>> back = inv.simulate(m.simulate(v, initial_state=s), initial_state=m.inverse_state(s))
+        >>> bool(np.allclose(back, v, atol=1e-12))
+        True
         """
         z = as_state(state, self.n_states, "state")
         head = (self.p0 + np.cumsum(self._p)) * z
@@ -572,6 +766,15 @@ class StopPI(HysteresisModel):
 
     The stop E_r of eq. 15-16 (elastic-plastic element): state is the stop
     outputs and the last input, ``[e_1, ..., e_N, v_prev]``.
+
+    Parameters
+    ----------
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all > 0 (the stops saturate at +-r_i).
+    weights : array_like, shape (N,)
+        p_1..p_N.
+    p0 : float, optional
+        Weight of the linear term p0 v (default 0).
 
     Examples
     --------
@@ -814,12 +1017,35 @@ _MODELS = {"PI": PI, "MGPI": MGPI, "GPI": GPI, "StopPI": StopPI}
 def model_from_dict(d, expected=None):
     """Rebuild a model written by ``model.to_dict()``.
 
+    Parameters
+    ----------
+    d : dict or str
+        The description (``model.to_dict()``) or its JSON string
+        (``model.to_json()``), with its ``schema_version``.
+    expected : type, optional
+        A model class the description must be of (a subclass counts);
+        default any registered model.
+
+    Returns
+    -------
+    HysteresisModel
+        A model equal to the one written (PI, MGPI, GPI, StopPI or another
+        registered model type).
+
+    Raises
+    ------
+    ValueError
+        For a malformed description, another schema version, an unknown
+        model type or one that is not `expected`.
+
     Examples
     --------
     >>> from hystcomp import PI, model_from_dict
     >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
     >>> model_from_dict(m.to_dict()) == m
     True
+    >>> model_from_dict(m.to_json(), expected=PI)
+    PI(N=2, p0=1.0)
     """
     if isinstance(d, str):
         import json

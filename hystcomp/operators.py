@@ -66,7 +66,24 @@ def play(v, thresholds, state=None):
 def stop(v, thresholds, state=None):
     """Stop operators E_r (eq. 15-16), the elastic-plastic element.
 
-    `state` is ``[e_1, ..., e_N, v_prev]`` (default zeros: e(0) = e_r(v(0))).
+    ``e <- e_r(v - v_prev + e)`` with ``e_r(x) = min{r, max{-r, x}}``.
+
+    Parameters
+    ----------
+    v : array_like, shape (n,)
+        Input samples.
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all >= 0 (the stops saturate at +-r).
+    state : array_like, shape (N + 1,), optional
+        ``[e_1, ..., e_N, v_prev]``: the stop outputs and the input before
+        the first sample; default zeros (e(0) = e_r(v(0))).
+
+    Returns
+    -------
+    e : ndarray, shape (n, N)
+        Output of every operator at every sample.
+    state : ndarray, shape (N + 1,)
+        ``[e_1, ..., e_N, v_last]`` after the last sample.
 
     Examples
     --------
@@ -95,6 +112,28 @@ def generalized_play(v, thresholds, envelope_left, envelope_right=None, state=No
     ``w <- max{gl(v) - r, min{gr(v) + r, w}}``; `envelope_right` defaults to
     `envelope_left`.
 
+    Parameters
+    ----------
+    v : array_like, shape (n,)
+        Input samples (inside the envelopes' domains).
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all >= 0.
+    envelope_left : Envelope
+        gl, of the lower boundary, which the output follows while the
+        input rises.
+    envelope_right : Envelope, optional
+        gr, of the upper boundary, which the output follows while the input
+        falls; default `envelope_left`.
+    state : array_like, shape (N,), optional
+        Operator outputs w before the first sample; default 0.
+
+    Returns
+    -------
+    w : ndarray, shape (n, N)
+        Output of every operator at every sample.
+    state : ndarray, shape (N,)
+        Outputs after the last sample.
+
     Examples
     --------
     >>> from hystcomp.envelopes import Linear
@@ -119,6 +158,28 @@ def modified_play(v, thresholds, envelope_left, envelope_right=None, state=None,
 
     ``w <- max{gl(v - r), min{gr(v + r), w}}``; `envelope_right` defaults to
     `envelope_left`.  The state is the operator outputs w.
+
+    Parameters
+    ----------
+    v : array_like, shape (n,)
+        Input samples (inside the envelopes' domains).
+    thresholds : array_like, shape (N,)
+        r_1 < ... < r_N, all >= 0.
+    envelope_left : Envelope
+        gl, of the lower boundary, which the output follows while the
+        input rises.
+    envelope_right : Envelope, optional
+        gr, of the upper boundary, which the output follows while the input
+        falls; default `envelope_left`.
+    state : array_like, shape (N,), optional
+        Operator outputs w before the first sample; default 0.
+
+    Returns
+    -------
+    w : ndarray, shape (n, N)
+        Output of every operator at every sample.
+    state : ndarray, shape (N,)
+        Outputs after the last sample.
 
     Examples
     --------

@@ -30,6 +30,13 @@ def _wrap(text, width=80):
 def new_figure(nrows=1, ncols=1, size=(6.4, 4.8)):
     """A figure with a grid of axes, detached from pyplot.
 
+    Parameters
+    ----------
+    nrows, ncols : int, optional
+        Rows and columns of the grid (default 1 by 1).
+    size : (float, float), optional
+        Figure width and height in inches (default (6.4, 4.8)).
+
     Returns
     -------
     fig : Figure
@@ -104,6 +111,7 @@ def plot_operators(v, W, thresholds, ax=None, select=None, title=None, name="r")
     select : sequence of float, optional
         Thresholds to show (nearest columns); default all.
     title : str, optional
+        Axes title (long ones are wrapped).
     name : str, optional
         Symbol of the threshold in the legend.
 
@@ -148,6 +156,21 @@ def plot_compensation(t, u, v, w, title=None, error_label=None):
     """Inverse compensation in time: reference u, compensator output v and
     model output w (top), and the tracking error w - u (bottom).
 
+    Parameters
+    ----------
+    t : array_like, shape (n,)
+        Times.
+    u : array_like, shape (n,)
+        Reference (desired output).
+    v : array_like, shape (n,)
+        Compensator output, the model's input.
+    w : array_like, shape (n,)
+        Model output.
+    title : str, optional
+        Title of the top panel (long ones are wrapped).
+    error_label : str, optional
+        Title of the error panel; default "tracking error".
+
     Returns
     -------
     Figure
@@ -180,6 +203,23 @@ def plot_compensation(t, u, v, w, title=None, error_label=None):
 
 def plot_loading_curve(r, simulated, analytic, ax=None, title=None):
     """Simulated loading curve (markers) over the analytic one (line).
+
+    Parameters
+    ----------
+    r : array_like, shape (n,)
+        Inputs at which both curves are given.
+    simulated : array_like, shape (n,)
+        Loading curve from a simulation (markers).
+    analytic : array_like, shape (n,)
+        Loading curve from its formula (line, e.g. eq. 35).
+    ax : Axes, optional
+        Where to draw; default a new figure.
+    title : str, optional
+        Axes title (long ones are wrapped).
+
+    Returns
+    -------
+    Axes
 
     Examples
     --------
@@ -297,9 +337,22 @@ def figure_5(case, analytic=True):
 def thesis_figures(dt=None):
     """Every figure of the thesis reproduction, as ``{file stem: Figure}``.
 
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling time of the thesis's input signals in seconds; default
+        each case's own (see :mod:`hystcomp.thesis`).  A coarser one makes
+        quick previews.
+
+    Returns
+    -------
+    dict
+        File stem (``"fig2_1"``, ``"fig3_13"``, ..., ``"fig5_6"``) ->
+        :class:`matplotlib.figure.Figure`.
+
     Examples
     --------
-    >>> figs = thesis_figures(dt=0.01)
+    >>> figs = thesis_figures(dt=0.05)
     >>> sorted(figs)[:3]
     ['fig2_1', 'fig3_13', 'fig3_14']
     """

@@ -73,7 +73,11 @@ THESIS_TABLES = {
 class ThesisCase:
     """One simulated case of the thesis.
 
-    Attributes
+    Made by the section functions of this module; every parameter is kept
+    as the attribute of the same name, and ``case.model`` is the single
+    model of a one-model case.
+
+    Parameters
     ----------
     section : str
         Section of the thesis ("3.5", "5.4", ...).
@@ -90,6 +94,19 @@ class ThesisCase:
         Choices the thesis leaves open and how the case fills them.
     extra : dict
         Other data of the case (e.g. the analytic loading curve).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> t = time_vector(1.0, 0.5)
+    >>> case = ThesisCase("2.1", "a loop", t, np.sin(t), {"PI": PI([1.0], [0.5], p0=1.0)})
+    >>> case.model
+    PI(N=1, p0=1.0)
+    >>> section_3_5(dt=0.01).model
+    Traceback (most recent call last):
+    ...
+    ValueError: Case 3.5 has 3 models (PI, GPI, mGPI); pick one from .models
     """
 
     section: str
@@ -114,6 +131,17 @@ class ThesisCase:
 def time_vector(t_end=10.0, dt=DT):
     """Sample times 0, dt, ..., t_end (the thesis's t in [0, 10]).
 
+    Parameters
+    ----------
+    t_end : float, optional
+        Last time in seconds (default 10), rounded to a multiple of `dt`.
+    dt : float, optional
+        Step in seconds, > 0 (default :data:`DT`).
+
+    Returns
+    -------
+    ndarray
+
     Examples
     --------
     >>> t = time_vector(1.0, 0.25)
@@ -128,6 +156,16 @@ def time_vector(t_end=10.0, dt=DT):
 
 def density(r):
     """The density of every case of the thesis, p(r) = e^{-0.1 r}.
+
+    Parameters
+    ----------
+    r : float or array_like
+        Thresholds.
+
+    Returns
+    -------
+    ndarray
+        p(r), of `r`'s shape (0-d for a scalar).
 
     Examples
     --------
@@ -148,6 +186,11 @@ def figure_2_1(dt=DT):
     model of eq. 34 (p0 = 1, p(r) = e^{-0.1 r}) with r_i = 0.5 i, N = 20.
     The loop shows the multivalued output, the wiping-out property and
     congruent minor loops.
+
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
 
     Examples
     --------
@@ -236,6 +279,11 @@ def section_3_5(dt=DT):
     H(v) = p0 v (the PI model's term), so the three models differ only in
     their operators.
 
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Examples
     --------
     >>> case = section_3_5(dt=0.01)
@@ -271,6 +319,15 @@ def section_4_1(spacing=0.05, R=10.0, dt=DT):
     on the loading curve); the discrete curve lies below eq. 35 by at most
     ``spacing * r`` (:func:`loading_curve_error_bound`).
 
+    Parameters
+    ----------
+    spacing : float, optional
+        Threshold step h of the discretised density (default 0.05).
+    R : float, optional
+        Largest threshold (default 10).
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Examples
     --------
     >>> case = section_4_1(dt=0.01)
@@ -299,6 +356,17 @@ def loading_curve_deviation(case, n_points=2001):
 
     phi_N is the discretised model's loading curve, phi eq. 35.
 
+    Parameters
+    ----------
+    case : ThesisCase
+        A case made by :func:`section_4_1`.
+    n_points : int, optional
+        Number of points r on [0, R] (default 2001).
+
+    Returns
+    -------
+    float
+
     Examples
     --------
     >>> dev = loading_curve_deviation(section_4_1(dt=0.01))
@@ -316,6 +384,17 @@ def loading_curve_error_bound(spacing, r):
     discrete curve is ``r + sum_{r_i < r} h f(r_i)`` (a right Riemann sum with
     step h), and ``0 <= int_0^r f - sum h f(r_i) <= h f(0) = h r``.
 
+    Parameters
+    ----------
+    spacing : float
+        Threshold step h.
+    r : float
+        End of the loading curve.
+
+    Returns
+    -------
+    float
+
     Examples
     --------
     >>> loading_curve_error_bound(0.05, 10.0)
@@ -326,6 +405,21 @@ def loading_curve_error_bound(spacing, r):
 
 def mgpi_bound(spacing=0.5, R=10.0, U=10.0, p0=1.0):
     """Eq. 29 for the discretised mGPI of section 3.5: ``U (p0 + sum_i p_i)``.
+
+    Parameters
+    ----------
+    spacing : float, optional
+        Threshold step (default 0.5, r_i = 0.5 i).
+    R : float, optional
+        Largest threshold (default 10).
+    U : float, optional
+        Supremum of the envelopes (default 10, from 10 tanh(.)).
+    p0 : float, optional
+        Weight of the r = 0 operator (default 1).
+
+    Returns
+    -------
+    float
 
     Examples
     --------
@@ -338,6 +432,21 @@ def mgpi_bound(spacing=0.5, R=10.0, U=10.0, p0=1.0):
 
 def mgpi_bound_limit(R=10.0, U=10.0, p0=1.0):
     """Eq. 29 with the integral: ``U (p0 + 10 - 10 e^{-R/10})`` (73.21 for R = 10).
+
+    The limit of :func:`mgpi_bound` as the threshold step goes to 0.
+
+    Parameters
+    ----------
+    R : float, optional
+        Upper limit of the density's integral (default 10).
+    U : float, optional
+        Supremum of the envelopes (default 10).
+    p0 : float, optional
+        Weight of the r = 0 operator (default 1).
+
+    Returns
+    -------
+    float
 
     Examples
     --------
@@ -369,6 +478,13 @@ def section_5(name, dt=DT):
 
     The printed inverse parameters are in ``THESIS_TABLES[name]``.
 
+    Parameters
+    ----------
+    name : {"5.2", "5.3", "5.4"}
+        The section (see :data:`SECTION_5`).
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Examples
     --------
     >>> case = section_5("5.4", dt=0.01)
@@ -393,6 +509,11 @@ def section_5(name, dt=DT):
 def section_5_2(dt=DT):
     """Section 5.2 (Fig. 5.3): identity envelope, r_i = 0.25 i; see :func:`section_5`.
 
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Examples
     --------
     >>> section_5_2(dt=0.01).section
@@ -404,6 +525,11 @@ def section_5_2(dt=DT):
 def section_5_3(dt=DT):
     """Section 5.3 (Fig. 5.4): gamma = 3v, r_i = 0.25 i; see :func:`section_5`.
 
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Examples
     --------
     >>> section_5_3(dt=0.01).model.envelope
@@ -414,6 +540,11 @@ def section_5_3(dt=DT):
 
 def section_5_4(dt=DT):
     """Section 5.4 (Fig. 5.6): gamma = atanh(0.5 v), r_i = 0.025 i; see :func:`section_5`.
+
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
 
     Examples
     --------
@@ -427,6 +558,11 @@ def compensation_errors(dt=DT):
     """Tracking errors of the analytic inverse (eqs. 54-58) and of the exact
     inverse for sections 5.2-5.4: ``model(inverse(u)) - u``.
 
+    Parameters
+    ----------
+    dt : float, optional
+        Sampling step in seconds (default :data:`DT`).
+
     Returns
     -------
     list of dict
@@ -436,7 +572,7 @@ def compensation_errors(dt=DT):
 
     Examples
     --------
-    >>> rows = compensation_errors(dt=0.01)
+    >>> rows = compensation_errors(dt=0.05)
     >>> [(r["section"], r["inverse"]) for r in rows][:2]
     [('5.2', 'analytic'), ('5.2', 'exact')]
     """

@@ -20,12 +20,26 @@ logger = logging.getLogger(__name__)
 
 
 def _title_and_body(source):
+    """Title from the docstring's first paragraph: the part before its first
+    top-level colon, or its first sentence; the rest becomes the body."""
     import ast
 
-    doc = ast.get_docstring(ast.parse(source)) or ""
-    lines = doc.strip().splitlines()
-    title = lines[0].strip() if lines else "Example"
-    body = "\n".join(lines[1:]).strip()
+    doc = (ast.get_docstring(ast.parse(source)) or "Example").strip()
+    first, _, rest = doc.partition("\n\n")
+    para = " ".join(line.strip() for line in first.splitlines())
+    depth, cut = 0, None
+    for i, ch in enumerate(para):
+        depth += ch in "([{"
+        depth -= ch in ")]}"
+        if ch == ":" and depth == 0 and i >= 10:
+            cut = (i, i + 1)
+            break
+    if cut is None:
+        end = para.find(". ")
+        cut = (end + 1, end + 2) if end > 0 else (len(para), len(para))
+    title = para[: cut[0]].strip().rstrip(".")
+    lead = para[cut[1]:].strip()
+    body = "\n\n".join(x for x in (lead, rest.strip()) if x)
     return title, body
 
 
