@@ -4,6 +4,7 @@
 
     hystcomp demo   [--out DIR] [...]  # closed-loop study: five scenarios, exact and analytic compensators
     hystcomp thesis [--out DIR]        # all thesis figures + section 5 error table
+    hystcomp diagnose DATA.csv [--time t --input v --output y] [--json] [--plots DIR]
     hystcomp --version
 
 ``demo`` runs the thesis's mGPI actuator in front of a piezo stage through the
@@ -102,6 +103,11 @@ def build_parser():
             "feedforward + PID) with the exact and the analytic compensator; prints the comparison "
             "table, writes PNG figures and a CSV")
     demo.add_arguments(sub.add_parser("demo", help=text, description=text))
+    from . import diagnose
+
+    text = ("find what a fitted PI model misses in measured data (rate dependence, creep, drift, "
+            "asymmetry, saturation), add what pays on held-out data, report the gap per step")
+    diagnose.add_arguments(sub.add_parser("diagnose", help=text, description=text))
     text = ("reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
             "a printed table of the section 5 compensation errors and its CSV")
     p = sub.add_parser("thesis", help=text, description=text)
@@ -125,6 +131,10 @@ def main(argv=None):
     if args.command == "thesis":
         reproduce(args.out)
         return 0
+    if args.command == "diagnose":
+        from . import diagnose
+
+        return diagnose.run(args)
     if args.command == "demo":
         from . import demo
 

@@ -304,7 +304,7 @@ def test_schema_version_mismatch_raises():
     with pytest.raises(ValueError, match="schema_version None"):
         model_from_dict(d)
     with pytest.raises(ValueError, match="unknown"):
-        model_from_dict({"schema_version": 1, "model": "Preisach"})
+        model_from_dict({"schema_version": 1, "model": "NoSuchModel"})
     with pytest.raises(ValueError, match="not GPI"):
         GPI.from_dict(MODELS["PI"].to_dict())
 
