@@ -2,7 +2,7 @@
 
 Build:  sphinx-build -W -b html docs docs/_build/html
 The gallery extension (_ext/hystcomp_gallery.py) runs every examples/*.py
-headless (MPLBACKEND=Agg, HYSTCOMP_QUICK=1) and embeds its output and figures,
+headless (MPLBACKEND=Agg) and embeds its output and figures,
 so a broken example or a stale API name fails the build.
 """
 

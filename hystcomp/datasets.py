@@ -15,7 +15,7 @@ rate_dependence  ``lag``: first-order lag after the hysteresis, tau 1.5-6 ms;
                  ``resonance``: lightly damped mode after it, 15-35 Hz
                  (at most 0.2/dt),
                  damping 0.05-0.3; ``rate_thresholds``: thresholds
-                 r_i + beta |dv/dt| (Al Janaideh et al. 2009), beta 4-10 ms
+                 ``r_i + beta |dv/dt|`` (Al Janaideh et al. 2009), beta 4-10 ms
 creep            ``multi_time_constant``: three lags of the input, tau
                  0.1-5 s, 5-12 % of the static gain; ``logarithmic``:
                  gamma log10(1 + t/t0) after every input change (Jung and
@@ -27,9 +27,9 @@ drift            ``ramp``: linear in time; ``thermal``: 1 - exp(-t/tau), tau
                  2-6 % of the output span
 asymmetry        ``branch_gain``: asymmetric mGPI with linear envelopes of
                  slopes 1 and 1.25-1.6 (or the inverse); ``envelopes``:
-                 quadratic envelopes v + c v^2/A with |c_left - c_right|
+                 quadratic envelopes v + c v^2/A with ``|c_left - c_right|``
                  0.14-0.22; ``output_quadratic``: y = H + a H^2 / max|H|,
-                 |a| 0.06-0.15
+                 ``|a|`` 0.06-0.15
 saturation       ``tanh_envelope``: mGPI with gamma = tanh(b v)/b, b A
                  0.8-1.4; ``output_tanh``: y = S tanh(H/S), S 0.7-1.2 of
                  max|H|; ``cubic``: y = H - k H^3 / max|H|^2, k 0.12-0.25
@@ -62,7 +62,17 @@ HiddenEffectData = namedtuple("HiddenEffectData", ["t", "v", "y", "effect", "mec
                                                    "clean", "noise"])
 HiddenEffectData.__doc__ = """Simulated measurement: t, v, y (noisy output), the hidden effect
 and mechanism (None for none), their parameters (dict), the noise-free output
-and the noise standard deviation."""
+and the noise standard deviation (a named tuple, returned by
+:func:`hidden_effect_data`).
+
+Examples
+--------
+>>> d = hidden_effect_data(None, seed=0, dt=0.01)
+>>> d.effect, d.mechanism, d.t.size == d.y.size == d.clean.size
+(None, None, True)
+>>> bool(abs(float(np.std(d.y - d.clean)) - d.noise) < 0.1 * d.noise)   # white noise of std d.noise
+True
+"""
 
 
 def _actuator(rng, A):

@@ -237,6 +237,25 @@ def evidence(t, v, y, model=None, validation=0.3):
     """The residual signatures of every effect for a model's residual (default
     a plain PI model fitted on the training part), as a dict of dicts.
 
+    Parameters
+    ----------
+    t, v, y : array_like, shape (n,)
+        Time [s] (increasing, uniformly sampled), input and measured output.
+    model : model, optional
+        A model whose ``simulate(v)`` predicts y (offset included, e.g.
+        :attr:`Diagnosis.model`); default a plain PI model fitted on the
+        training part.
+    validation : float
+        Fraction of the record held out at its end (not used to fit the
+        default model).
+
+    Returns
+    -------
+    dict
+        Effect name -> dict with ``signature`` (what is measured),
+        the effect's statistics, ``testable`` (whether the data can show the
+        effect) and ``reading`` (a sentence).
+
     Examples
     --------
     >>> from hystcomp.datasets import hidden_effect_data
@@ -627,6 +646,16 @@ class Diagnosis:
         Effects the data cannot show, with the reason.
     stopped : str
         Why the search stopped.
+
+    Examples
+    --------
+    >>> from hystcomp.datasets import hidden_effect_data
+    >>> d = hidden_effect_data("drift", seed=3, dt=0.01)
+    >>> rep = diagnose(d.t, d.v, d.y, effects=["drift"], progress=False)
+    >>> rep.effects, rep.steps[0]["effect"], rep.rms_after < rep.rms_before
+    (['drift'], 'drift', True)
+    >>> print(rep.summary().splitlines()[-1])
+    effects: drift; held-out RMS 0.02371 -> 0.005759; stopped: every candidate effect was added
     """
 
     def __init__(self, **kw):
@@ -640,6 +669,7 @@ class Diagnosis:
                            "evidence": s["evidence"]} for s in self.steps]}
 
     def to_json(self):
+        """:meth:`to_dict` as a JSON string (numpy values converted)."""
         return json.dumps(_jsonable(self.to_dict()))
 
     def summary(self):
@@ -744,7 +774,19 @@ class Diagnosis:
         return out
 
     def save_plots(self, folder):
-        """Write the figures of :meth:`plots` as PNG files; returns their paths."""
+        """Write the figures of :meth:`plots` as PNG files; returns their paths.
+
+        Parameters
+        ----------
+        folder : str or path-like
+            Directory for ``diagnose_signatures.png``, ``diagnose_loops.png``
+            and ``diagnose_gap.png`` (created if missing).
+
+        Returns
+        -------
+        list of str
+            The paths written.
+        """
         os.makedirs(folder, exist_ok=True)
         paths = []
         for name, fig in self.plots().items():
@@ -801,6 +843,7 @@ def diagnose(t, v, y, base="pi", effects=ALL, validation=0.3, max_effects=3, min
     progress : bool
         Progress lines on stderr.
     n_thresholds : int
+        Number of thresholds of the default base model (``base="pi"``).
 
     Returns
     -------
@@ -912,7 +955,43 @@ def diagnose(t, v, y, base="pi", effects=ALL, validation=0.3, max_effects=3, min
 def load_csv(path, time="t", input="v", output="y"):
     """(t, v, y) from a CSV file with a header row; ValueError with a one-line
     reason for missing columns, non-numeric cells, NaN, unsorted time or too
-    few samples."""
+    few samples.
+
+    Parameters
+    ----------
+    path : str or path-like
+        The CSV file (comma separated, a header row, at least 100 samples).
+    time, input, output : str
+        Header names of the time [s], input and output columns.
+
+    Returns
+    -------
+    t, v, y : ndarray
+        The three columns, time strictly increasing.
+
+    Raises
+    ------
+    ValueError
+        With a one-line reason naming the file (and line) at fault.
+
+    Examples
+    --------
+    >>> import os, tempfile
+    >>> folder = tempfile.mkdtemp()
+    >>> path = os.path.join(folder, "record.csv")
+    >>> k = np.arange(100)
+    >>> np.savetxt(path, np.column_stack([0.01 * k, k % 7, k % 5]), delimiter=",",
+    ...            header="time,volt,um", comments="")
+    >>> t, v, y = load_csv(path, time="time", input="volt", output="um")
+    >>> t.size, float(v[8]), float(y[8])
+    (100, 1.0, 3.0)
+    >>> load_csv(path)
+    Traceback (most recent call last):
+    ...
+    ValueError: ... has no column 't' (header: time, volt, um)
+    >>> import shutil
+    >>> shutil.rmtree(folder)
+    """
     import csv
 
     try:
@@ -953,7 +1032,25 @@ def load_csv(path, time="t", input="v", output="y"):
 
 
 def add_arguments(parser):
-    """Add the ``diagnose`` arguments to an argparse parser (sub-parser)."""
+    """Add the ``diagnose`` arguments to an argparse parser (sub-parser).
+
+    Parameters
+    ----------
+    parser : argparse.ArgumentParser
+        The parser (or sub-parser) to extend.
+
+    Returns
+    -------
+    argparse.ArgumentParser
+        The same parser.
+
+    Examples
+    --------
+    >>> import argparse
+    >>> args = add_arguments(argparse.ArgumentParser()).parse_args(["data.csv", "--max-effects", "1"])
+    >>> args.data, args.max_effects, args.validation
+    ('data.csv', 1, 0.3)
+    """
     parser.add_argument("data", metavar="DATA.csv", help="CSV file with a header row")
     parser.add_argument("--time", default="t", help="time column [s] (default t)")
     parser.add_argument("--input", default="v", help="input column (default v)")
@@ -968,7 +1065,26 @@ def add_arguments(parser):
 
 def run(args):
     """Run ``hystcomp diagnose`` for parsed `args`; returns the exit status
-    (0 success, 2 bad data file)."""
+    (0 success, 2 bad data file).
+
+    Parameters
+    ----------
+    args : argparse.Namespace
+        Arguments parsed by a parser built with :func:`add_arguments`.
+
+    Returns
+    -------
+    int
+        Exit status: 0 on success (the report or JSON printed to stdout), 2
+        when the data file cannot be used (a one-line error on stderr).
+
+    Examples
+    --------
+    >>> import argparse
+    >>> args = add_arguments(argparse.ArgumentParser()).parse_args(["no-such-file.csv", "--quiet"])
+    >>> run(args)   # prints "hystcomp diagnose: error: cannot read no-such-file.csv: ..." on stderr
+    2
+    """
     try:
         t, v, y = load_csv(args.data, args.time, args.input, args.output)
         rep = diagnose(t, v, y, validation=args.validation, max_effects=args.max_effects,

@@ -62,7 +62,21 @@ class _DifferentialModel(HysteresisModel):
 
     def exact_inverse(self, on_unreachable="clip", input_limits=None):
         """Numerical inverse compensator (monotone solve per sample),
-        :class:`hystcomp.numerical_inverse.NumericalInverse`."""
+        :class:`hystcomp.numerical_inverse.NumericalInverse`.
+
+        Parameters
+        ----------
+        on_unreachable : {"clip", "raise"}
+            What to do with a desired output the model cannot reach, as in
+            :class:`~hystcomp.numerical_inverse.NumericalInverse`.
+        input_limits : (float, float), optional
+            Bounds of the compensator output (see
+            :class:`~hystcomp.numerical_inverse.NumericalInverse` for the default).
+
+        Returns
+        -------
+        NumericalInverse
+        """
         from .numerical_inverse import NumericalInverse
 
         return NumericalInverse(self, on_unreachable=on_unreachable, input_limits=input_limits)
@@ -92,6 +106,7 @@ class BoucWen(_DifferentialModel):
         Linear term ``gain * v`` added to the output (>= 0; 0 is eq. 3
         alone, which saturates at :meth:`w_bound`).
     offset : float, optional
+        Constant added to the output.
     sign : {1, -1}, optional
         Sign of w in the output.  w alone traces a clockwise,
         stop-like loop; piezo actuators are modelled as ``y = d v - w``
@@ -155,7 +170,36 @@ class BoucWen(_DifferentialModel):
 
     def simulate(self, v, initial_state=None, return_state=False):
         """Output for the input samples `v`; state ``[v_prev, w]`` (see
-        :meth:`hystcomp.models.HysteresisModel.simulate`)."""
+        :meth:`hystcomp.models.HysteresisModel.simulate`).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (2,), optional
+            ``[v_prev, w]`` at the start: the previous input and the
+            internal variable w; default ``[0, 0]`` (the virgin state at v = 0).
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Model output.
+        state : ndarray, shape (2,)
+            Final ``[v_prev, w]``; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> m = BoucWen(A=1.0, alpha=0.5, beta=0.5, n=1.0)
+        >>> np.round(m.simulate([0.0, 1.0, 2.0]), 6).tolist()   # 1 - exp(-v) towards w_bound = 1
+        [0.0, 0.632121, 0.864665]
+        >>> v = 3 * np.sin(np.linspace(0, 20, 2001))
+        >>> y1, s = m.simulate(v[:1000], return_state=True)
+        >>> bool(np.array_equal(np.concatenate([y1, m.simulate(v[1000:], initial_state=s)]), m.simulate(v)))
+        True
+        """
         x = as_signal(v, "v")
         s = self._state(initial_state)
         y = np.empty(x.size)
@@ -215,6 +259,7 @@ class BacklashLike(_DifferentialModel):
         Slope right after a reversal, ``0 < B1 <= c`` (Su et al.'s ``c > B1``;
         ``B1 = c`` is the line ``w = c v + const``).
     offset : float, optional
+        Constant added to the output.
 
     Notes
     -----
@@ -251,7 +296,32 @@ class BacklashLike(_DifferentialModel):
         return 4
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Output for the input samples `v`; state ``[v_prev, w]``."""
+        """Output for the input samples `v`; state ``[v_prev, w]``.
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (2,), optional
+            ``[v_prev, w]`` at the start: the previous input and the
+            internal variable w; default ``[0, 0]`` (the virgin state at v = 0).
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Model output.
+        state : ndarray, shape (2,)
+            Final ``[v_prev, w]``; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> m = BacklashLike(alpha=1.0, c=3.0, B1=1.0)
+        >>> y, s = m.simulate([0.0, 1.0, 2.0], return_state=True)
+        >>> [round(float(x), 6) for x in y], [round(float(x), 6) for x in s]
+        ([0.0, 1.735759, 4.270671], [2.0, 4.270671])
+        """
         x = as_signal(v, "v")
         s = self._state(initial_state)
         y = np.empty(x.size)
@@ -382,6 +452,7 @@ class Duhem(_DifferentialModel):
         global error of RK4 falls as ``max_step^4``; choose it small
         against the input scale over which the slopes change.
     gain, offset : float, optional
+        Linear term ``gain * v`` and constant added to the output.
 
     Notes
     -----
@@ -431,7 +502,27 @@ class Duhem(_DifferentialModel):
         return self.params.size + 2
 
     def with_params(self, params, gain=None, offset=None):
-        """A copy with new parameters (shares the compiled kernel)."""
+        """A copy with new parameters (shares the compiled kernel).
+
+        Parameters
+        ----------
+        params : array_like
+            New parameters of the shape functions.
+        gain, offset : float, optional
+            New gain and offset; default the current ones.
+
+        Returns
+        -------
+        Duhem
+
+        Examples
+        --------
+        >>> f1 = lambda w, v, p: p[0] * (p[1] * v - w) + p[2]
+        >>> f2 = lambda w, v, p: -p[0] * (p[1] * v - w) + p[2]
+        >>> m = Duhem(f1, f2, params=[1.0, 3.0, 1.0]).with_params([2.0, 3.0, 1.0], offset=1.0)
+        >>> m.params.tolist(), m.gain, m.offset
+        ([2.0, 3.0, 1.0], 0.0, 1.0)
+        """
         new = Duhem.__new__(Duhem)
         new.__dict__.update(self.__dict__)
         new.params = np.atleast_1d(np.asarray(params, dtype=np.float64)).copy()
@@ -442,7 +533,38 @@ class Duhem(_DifferentialModel):
         return new
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Output for the input samples `v`; state ``[v_prev, w]``."""
+        """Output for the input samples `v`; state ``[v_prev, w]``.
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (2,), optional
+            ``[v_prev, w]`` at the start: the previous input and the
+            internal variable w; default ``[0, 0]`` (the virgin state at v = 0).
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Model output.
+        state : ndarray, shape (2,)
+            Final ``[v_prev, w]``; only with ``return_state=True``.
+
+        Raises
+        ------
+        FloatingPointError
+            If the output diverges (unbounded shape functions).
+
+        Examples
+        --------
+        >>> f1 = lambda w, v, p: p[0] * (p[1] * v - w) + p[2]
+        >>> f2 = lambda w, v, p: -p[0] * (p[1] * v - w) + p[2]
+        >>> m = Duhem(f1, f2, params=[1.0, 3.0, 1.0], max_step=0.01)
+        >>> [round(float(x), 6) for x in m.simulate([0.0, 1.0, 2.0])]   # = BacklashLike(1, 3, 1)
+        [0.0, 1.735759, 4.270671]
+        """
         x = as_signal(v, "v")
         s = self._state(initial_state)
         y = np.empty(x.size)

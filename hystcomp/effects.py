@@ -112,6 +112,24 @@ def lag_bank(v, time_constants, dt, state=None):
     ``a_j = exp(-dt / tau_j)`` (exact discretisation of ``tau x' = v - x`` for
     an input held over each step), shape (n, m); and the final states.
 
+    Parameters
+    ----------
+    v : array_like, shape (n,)
+        Input samples.
+    time_constants : array_like, shape (m,)
+        tau_j > 0 [s].
+    dt : float
+        Sampling time [s].
+    state : array_like, shape (m,), optional
+        Lag outputs before the first sample; default 0 (at rest).
+
+    Returns
+    -------
+    outputs : ndarray, shape (n, m)
+        Output of lag j at sample k in ``outputs[k, j]``.
+    state : ndarray, shape (m,)
+        Final lag outputs (pass as `state` to continue).
+
     Examples
     --------
     >>> x, s = lag_bank([1.0, 1.0, 1.0], [1.0], dt=1.0)
@@ -143,10 +161,19 @@ class LinearStage:
     Parameters
     ----------
     A : array_like, shape (ns, ns)
+        State matrix.
     B, C : array_like, shape (ns,)
+        Input and output vectors.
     D : float
+        Feedthrough.
     dt : float
         Sampling time [s] (the record's sample spacing).
+    kind : str, optional
+        Label of the stage ("lag", "resonance", "inverse" from the
+        factories; "custom" otherwise), used by ``repr`` and ``to_dict``.
+    parameters : dict, optional
+        The factory's physical parameters (e.g. ``{"time_constant": tau}``),
+        kept for ``repr`` and ``to_dict``.
 
     Examples
     --------
@@ -188,6 +215,17 @@ class LinearStage:
         the zero-order hold it keeps the lag of a time constant shorter than
         the sampling time (y ~ u - tau du/dt).
 
+        Parameters
+        ----------
+        time_constant : float
+            tau > 0 [s].
+        dt : float
+            Sampling time [s].
+
+        Returns
+        -------
+        LinearStage
+
         Notes
         -----
         State-space form with ``x_k = a y_{k-1} + b1 u_{k-1}``:
@@ -197,7 +235,7 @@ class LinearStage:
         --------
         >>> st = LinearStage.lag(0.1, dt=0.01)
         >>> y = st.simulate(np.arange(2000) * 0.01)      # a ramp: y lags by tau
-        >>> round(float(st.simulate(np.arange(2000) * 0.01)[-1] - 19.99), 6)
+        >>> round(float(y[-1] - 19.99), 6)
         -0.1
         """
         tau = as_scalar(time_constant, "time_constant", positive=True)
@@ -214,6 +252,19 @@ class LinearStage:
         frequency), discretised by the bilinear (Tustin) rule with the
         frequency prewarped (the discrete mode sits at `frequency`), static
         gain 1 (overshoot after steps for damping < 1/sqrt(2)).
+
+        Parameters
+        ----------
+        frequency : float
+            Natural frequency [Hz], below the Nyquist frequency ``0.5 / dt``.
+        damping : float
+            Damping ratio zeta > 0.
+        dt : float
+            Sampling time [s].
+
+        Returns
+        -------
+        LinearStage
 
         Examples
         --------
@@ -251,7 +302,30 @@ class LinearStage:
         return float(self.C @ np.linalg.solve(np.eye(self.n_states) - self.A, self.B) + self.D)
 
     def filter_columns(self, U, states=None):
-        """Filter every column of U (n, m) from rest (or from `states`, (m, ns))."""
+        """Filter every column of U (n, m) from rest (or from `states`, (m, ns)).
+
+        Parameters
+        ----------
+        U : array_like, shape (n, m)
+            m input signals of n samples, one per column.
+        states : array_like, shape (m, ns), optional
+            State of the stage for each column before the first sample;
+            default at rest (zeros).
+
+        Returns
+        -------
+        outputs : ndarray, shape (n, m)
+            The filtered columns.
+        states : ndarray, shape (m, ns)
+            Final states (pass as `states` to continue).
+
+        Examples
+        --------
+        >>> lag = LinearStage.lag(0.01, dt=0.001)
+        >>> out, X = lag.filter_columns(np.ones((3, 2)))
+        >>> np.round(out[:, 1], 6).tolist(), X.shape
+        ([0.048374, 0.138933, 0.220875], (2, 1))
+        """
         U = np.ascontiguousarray(U, dtype=np.float64)
         X = np.zeros((U.shape[1], self.n_states)) if states is None else np.array(states, dtype=np.float64)
         out = np.empty_like(U)
@@ -259,7 +333,31 @@ class LinearStage:
         return out, X
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Output of the stage for the input samples `v` (see the model protocol)."""
+        """Output of the stage for the input samples `v` (see the model protocol).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (n_states,), optional
+            State vector x of the stage; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (n_states,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> lag = LinearStage.lag(0.01, dt=0.001)
+        >>> y, s = lag.simulate(np.ones(3), return_state=True)
+        >>> np.round(y, 6).tolist(), bool(np.allclose(lag.simulate(np.ones(6))[3:], lag.simulate(np.ones(3), s)))
+        ([0.048374, 0.138933, 0.220875], True)
+        """
         x = as_signal(v, "v")
         s = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
         X = s.reshape(1, -1).copy()
@@ -269,8 +367,28 @@ class LinearStage:
         return (y, X[0].copy()) if return_state else y
 
     def l1_gain(self, n=None):
-        """Sum of |impulse response| (the peak-to-peak gain), truncated where
-        the response has decayed below 1e-12 of its peak."""
+        """Sum of ``|impulse response|`` (the peak-to-peak gain), truncated where
+        the response has decayed below 1e-12 of its peak.
+
+        Parameters
+        ----------
+        n : int, optional
+            Number of impulse-response samples summed; default from the
+            spectral radius of A (enough to decay below 1e-12), at most 10^6.
+
+        Returns
+        -------
+        float
+            The gain, raised by 1e-9 relative to cover rounding; inf for an
+            unstable stage.
+
+        Examples
+        --------
+        >>> round(LinearStage.lag(0.01, dt=0.001).l1_gain(), 6)   # monotone response: the DC gain
+        1.0
+        >>> round(LinearStage.resonance(20.0, 0.1, dt=1e-3).l1_gain(), 3)   # ringing: larger
+        6.39
+        """
         rho = max(abs(np.linalg.eigvals(self.A))) if self.n_states else 0.0
         if rho >= 1.0:
             return math.inf
@@ -281,7 +399,24 @@ class LinearStage:
         return float(np.sum(np.abs(self.simulate(imp)))) * (1.0 + 1e-9)
 
     def output_bounds(self, input_bounds=(-math.inf, math.inf)):
-        """Bounds of the output for inputs within `input_bounds` (from rest)."""
+        """Bounds of the output for inputs within `input_bounds` (from rest).
+
+        Parameters
+        ----------
+        input_bounds : (float, float)
+            Range of the input; default unbounded.
+
+        Returns
+        -------
+        (float, float)
+            ``-+ l1_gain() max(|lo|, |hi|)``; infinite for unbounded inputs.
+
+        Examples
+        --------
+        >>> lo, hi = LinearStage.lag(0.01, dt=0.001).output_bounds((-2.0, 2.0))
+        >>> round(lo, 6), round(hi, 6)
+        (-2.0, 2.0)
+        """
         lo, hi = input_bounds
         m = max(abs(lo), abs(hi))
         if not np.isfinite(m):
@@ -350,7 +485,8 @@ class RateDependentPI:
     Parameters
     ----------
     thresholds, weights, p0
-        As for :class:`~hystcomp.models.PI`.
+        Thresholds r_i (increasing, >= 0), weights p_i and the weight p0
+        of the input, as for :class:`~hystcomp.models.PI`.
     rate_coefficient : float
         beta >= 0 [s]: threshold growth per unit input rate.
     dt : float
@@ -389,7 +525,31 @@ class RateDependentPI:
         return np.zeros(self.n_states)
 
     def play_positions(self, v, initial_state=None):
-        """Play positions (n, N) and the final state."""
+        """Play positions (n, N) and the final state.
+
+        Parameters
+        ----------
+        v : array_like, shape (n,)
+            Input samples.
+        initial_state : array_like, shape (N + 2,), optional
+            N play positions, the previous input and the seen-a-sample
+            flag; default :meth:`default_state`.
+
+        Returns
+        -------
+        positions : ndarray, shape (n, N)
+            Output of play i (threshold ``r_i + beta |dv/dt|``) at sample k
+            in ``positions[k, i]``.
+        state : ndarray, shape (N + 2,)
+            Final state.
+
+        Examples
+        --------
+        >>> m = RateDependentPI([0.5, 1.0], [0.5, 0.25], 1.0, rate_coefficient=0.1, dt=1.0)
+        >>> Z, s = m.play_positions([0.0, 1.0, 2.0])    # rate 1: thresholds 0.6 and 1.1
+        >>> np.round(Z, 6).tolist()
+        [[0.0, 0.0], [0.4, 0.0], [1.4, 0.9]]
+        """
         x = as_signal(v, "v")
         s = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
         z = s[:self._r.size].copy()
@@ -399,7 +559,30 @@ class RateDependentPI:
         return out, np.concatenate([z, prev])
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Output for the input samples `v` (see the model protocol)."""
+        """Output for the input samples `v` (see the model protocol).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (N + 2,), optional
+            N play positions, the previous input and the seen-a-sample flag; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (N + 2,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> m = RateDependentPI([0.5, 1.0], [0.5, 0.25], 1.0, rate_coefficient=0.1, dt=1.0)
+        >>> np.round(m.simulate([0.0, 1.0, 2.0]), 6).tolist()
+        [0.0, 1.2, 2.925]
+        """
         x = as_signal(v, "v")
         Z, s = self.play_positions(x, initial_state)
         y = self.p0 * x
@@ -479,7 +662,31 @@ class CreepOperator:
         return np.zeros(self.n_states)
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Creep output for the input samples `v` (see the model protocol)."""
+        """Creep output for the input samples `v` (see the model protocol).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (m,), optional
+            Outputs of the m lags; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (m,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> c = CreepOperator([0.1, 1.0, 10.0], [0.01, 0.01, 0.01], dt=0.01)
+        >>> y, s = c.simulate(np.ones(3), return_state=True)
+        >>> np.round(y * 1e3, 4).tolist(), s.shape
+        ([1.0611, 2.0307, 2.9173], (3,))
+        """
         X, s = lag_bank(v, self.time_constants, self.dt, initial_state)
         y = np.zeros(X.shape[0])
         for j in range(self.n_states):
@@ -487,6 +694,23 @@ class CreepOperator:
         return (y, s) if return_state else y
 
     def output_bounds(self, input_bounds=(-math.inf, math.inf)):
+        """Bounds of the output for inputs within `input_bounds` (from rest).
+
+        Parameters
+        ----------
+        input_bounds : (float, float)
+            Range of the input; default unbounded.
+
+        Returns
+        -------
+        (float, float)
+            ``-+ sum_j |c_j| max(|lo|, |hi|)``; infinite for unbounded inputs.
+
+        Examples
+        --------
+        >>> CreepOperator([0.1, 1.0], [0.01, 0.02], dt=0.01).output_bounds((-2.0, 2.0))
+        (-0.06, 0.06)
+        """
         m = max(abs(input_bounds[0]), abs(input_bounds[1]))
         g = float(np.sum(np.abs(self.coefficients))) * m if np.isfinite(m) else math.inf
         return (-g, g)
@@ -520,6 +744,17 @@ class DriftTerm:
     is the sample count k, so chunks continue the same clock.  d(0) = 0 (a
     constant belongs to the offset of :class:`Parallel`).
 
+    Parameters
+    ----------
+    dt : float
+        Sampling time [s].
+    polynomial : array_like, optional
+        Coefficients of ``t, t^2, ...`` (no constant term).
+    amplitudes : array_like, optional
+        Amplitudes b_m of the settling terms ``b_m (1 - exp(-t / tau_m))``.
+    time_constants : array_like, optional
+        tau_m > 0 [s], one per amplitude.
+
     Examples
     --------
     >>> d = DriftTerm(0.5, polynomial=[0.1])
@@ -551,7 +786,24 @@ class DriftTerm:
         return np.zeros(1)
 
     def trend(self, t):
-        """d(t) for times t [s]."""
+        """d(t) for times t [s].
+
+        Parameters
+        ----------
+        t : float or array_like
+            Times [s] since the start.
+
+        Returns
+        -------
+        ndarray
+            The trend, shaped as `t`.
+
+        Examples
+        --------
+        >>> d = DriftTerm(1.0, amplitudes=[2.0], time_constants=[1.0])
+        >>> np.round(d.trend([0.0, 1.0, np.inf]), 6).tolist()
+        [0.0, 1.264241, 2.0]
+        """
         t = np.asarray(t, dtype=np.float64)
         d = np.zeros_like(t)
         for j, a in enumerate(self.polynomial):
@@ -561,7 +813,31 @@ class DriftTerm:
         return d
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """The trend at the samples of `v` (their values are ignored)."""
+        """The trend at the samples of `v` (their values are ignored).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (1,), optional
+            Sample count k at the first sample; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (1,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> d = DriftTerm(1.0, amplitudes=[2.0], time_constants=[1.0])
+        >>> y, s = d.simulate(np.zeros(3), return_state=True)
+        >>> np.round(y, 6).tolist(), s.tolist()
+        ([0.0, 1.264241, 1.729329], [3.0])
+        """
         x = as_signal(v, "v")
         s = self.default_state() if initial_state is None else as_state(initial_state, 1)
         k = s[0] + np.arange(x.size, dtype=np.float64)      # exact integers
@@ -635,6 +911,13 @@ class Series(_Composite):
     hysteresis (Hammerstein order reversed), ``Series(PI(...), stage)`` the
     hysteresis followed by the actuator's dynamics.
 
+    Parameters
+    ----------
+    *blocks : models
+        At least one block following the model protocol (``simulate``,
+        ``default_state``, ``n_states``); the state of the chain is their
+        states concatenated.
+
     Examples
     --------
     >>> from hystcomp import PI
@@ -655,7 +938,32 @@ class Series(_Composite):
         self.n_states = sum(b.n_states for b in blocks)
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Output of the chain (see the model protocol)."""
+        """Output of the chain (see the model protocol).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (n_states,), optional
+            The blocks' states concatenated, in chain order; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (n_states,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> from hystcomp import PI
+        >>> m = Series(PI([0.5], [0.5], 1.0), LinearStage.lag(0.05, dt=0.01))
+        >>> y, s = m.simulate([0.0, 1.0, 2.0], return_state=True)
+        >>> np.round(y, 6).tolist(), np.round(s, 6).tolist()
+        ([0.0, 0.117067, 0.462914], [1.5, 0.619944])
+        """
         x = as_signal(v, "v")
         parts = self._split(self._state(initial_state))
         finals = []
@@ -703,6 +1011,14 @@ class Series(_Composite):
 class Parallel(_Composite):
     """Blocks fed by the same input, outputs summed, plus a constant offset.
 
+    Parameters
+    ----------
+    *blocks : models
+        At least one block following the model protocol; the state is their
+        states concatenated.
+    offset : float, optional
+        Constant added to the sum.
+
     Examples
     --------
     >>> from hystcomp import PI
@@ -723,7 +1039,32 @@ class Parallel(_Composite):
         self.n_states = sum(b.n_states for b in blocks)
 
     def simulate(self, v, initial_state=None, return_state=False):
-        """Sum of the blocks' outputs plus the offset (see the model protocol)."""
+        """Sum of the blocks' outputs plus the offset (see the model protocol).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (n_states,), optional
+            The blocks' states concatenated, in order; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Output.
+        state : ndarray, shape (n_states,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> from hystcomp import PI
+        >>> m = Parallel(PI([0.5], [0.5], 1.0), DriftTerm(0.1, polynomial=[1.0]), offset=2.0)
+        >>> y, s = m.simulate([0.0, 1.0], return_state=True)
+        >>> np.round(y, 6).tolist(), s.tolist()
+        ([2.0, 3.35], [0.5, 2.0])
+        """
         x = as_signal(v, "v")
         parts = self._split(self._state(initial_state))
         y = np.full(x.size, self.offset)

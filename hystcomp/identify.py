@@ -486,13 +486,49 @@ class FitResult:
         Errors on the held-out samples.
     success, message, status : bool, str, str
         Solver outcome.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import PI
+    >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+    >>> y = PI([1.0, 2.0], [0.5, 0.2], p0=1.0).simulate(v) + 0.1
+    >>> res = fit_weights(v, y, thresholds=[1.0, 2.0], model="pi")
+    >>> np.round(res.weights, 4).tolist(), round(res.offset, 4), bool(res.rmse < 1e-6)
+    ([0.5, 0.2], 0.1, True)
+    >>> print(res.report().splitlines()[0])
+    PI fit: 2 operators, 3000 training samples
     """
 
     def __init__(self, **kw):
         self.__dict__.update(kw)
 
     def predict(self, v, initial_state=None):
-        """Model output plus offset for an input record."""
+        """Model output plus offset for an input record.
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input record.
+        initial_state : ndarray, optional
+            State of the model at the first sample (default: its virgin
+            state, ``model.default_state()``).
+
+        Returns
+        -------
+        ndarray, shape (n_samples,)
+            ``model.simulate(v) + offset``.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+        >>> true = PI([1.0, 2.0], [0.5, 0.2], p0=1.0)
+        >>> res = fit_weights(v, true.simulate(v) + 0.1, thresholds=[1.0, 2.0], model="pi")
+        >>> bool(np.allclose(res.predict(v[:50]), true.simulate(v[:50]) + 0.1, atol=1e-6))
+        True
+        """
         return self.model.simulate(v, initial_state=initial_state) + self.offset
 
     def report(self):
@@ -895,7 +931,19 @@ class EnvelopeFitResult(FitResult):
     """Outcome of :func:`fit`: a :class:`FitResult` plus ``envelope``,
     ``envelope_parameters``, ``cost`` (final training MSE), ``converged``,
     ``optimizer_message``, ``nfev`` and ``at_bound`` (indices of parameters
-    that ended on a bound of the search interval)."""
+    that ended on a bound of the search interval).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp import MGPI
+    >>> from hystcomp.envelopes import Tanh
+    >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+    >>> true = MGPI([1.0, 2.0], [0.5, 0.2], 1.0, envelope=Tanh(1 / 0.3, 0.3))
+    >>> res = fit(v, true.simulate(v), thresholds=[1.0, 2.0])
+    >>> round(res.envelope.b, 4), bool(res.converged), res.at_bound
+    (0.3, True, [])
+    """
 
     def report(self):
         env = (repr(self.envelope) if self.envelope is not None
@@ -1213,11 +1261,49 @@ class HysteresisRegressor:
                "H", "constraints", "regularization", "offset", "n_thresholds", "solver")
 
     def get_params(self, deep=True):
-        """The hyper-parameters (dict), as scikit-learn's ``get_params``."""
+        """The hyper-parameters (dict), as scikit-learn's ``get_params``.
+
+        Parameters
+        ----------
+        deep : bool
+            Accepted for scikit-learn compatibility; the hyper-parameters
+            hold no sub-estimators, so it changes nothing.
+
+        Returns
+        -------
+        dict
+            Hyper-parameter name -> value.
+
+        Examples
+        --------
+        >>> HysteresisRegressor(model="pi", n_thresholds=5).get_params()["n_thresholds"]
+        5
+        """
         return {k: getattr(self, k) for k in self._PARAMS}
 
     def set_params(self, **params):
-        """Set hyper-parameters; returns self."""
+        """Set hyper-parameters; returns self.
+
+        Parameters
+        ----------
+        **params
+            Hyper-parameter name -> new value (names of ``__init__``).
+
+        Returns
+        -------
+        HysteresisRegressor
+            self.
+
+        Raises
+        ------
+        ValueError
+            For a name that is not a hyper-parameter.
+
+        Examples
+        --------
+        >>> HysteresisRegressor().set_params(model="pi").model
+        'pi'
+        """
         for k, val in params.items():
             if k not in self._PARAMS:
                 raise ValueError(f"Parameter {k!r} is not a hyper-parameter of HysteresisRegressor; "
@@ -1227,7 +1313,31 @@ class HysteresisRegressor:
 
     def fit(self, v, y, sample_weight=None, validation=None):
         """Identify the model from input `v` and output `y` (arrays or lists
-        of records); returns self."""
+        of records); returns self.
+
+        Parameters
+        ----------
+        v, y : array_like or list of array_like
+            Input and measured output, as in :func:`fit_weights`.
+        sample_weight : array_like or list, optional
+            Non-negative weight per sample, as in :func:`fit_weights`.
+        validation : None, float, boolean mask(s) or (v_val, y_val)
+            Held-out data, as in :func:`fit_weights`.
+
+        Returns
+        -------
+        HysteresisRegressor
+            self, with the fitted attributes set.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+        >>> est = HysteresisRegressor(model="pi", thresholds=[1.0, 2.0])
+        >>> est.fit(v, PI([1.0, 2.0], [0.5, 0.2], p0=1.0).simulate(v)) is est
+        True
+        """
         kw = dict(thresholds=self.thresholds, constraints=self.constraints,
                   regularization=self.regularization, offset=self.offset,
                   n_thresholds=self.n_thresholds, solver=self.solver,
@@ -1251,13 +1361,56 @@ class HysteresisRegressor:
         return self
 
     def predict(self, v):
-        """Model output plus offset for an input record (from the virgin state)."""
+        """Model output plus offset for an input record (from the virgin state).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input record.
+
+        Returns
+        -------
+        ndarray, shape (n_samples,)
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+        >>> true = PI([1.0, 2.0], [0.5, 0.2], p0=1.0)
+        >>> est = HysteresisRegressor(model="pi", thresholds=[1.0, 2.0]).fit(v, true.simulate(v))
+        >>> bool(np.allclose(est.predict(v), true.simulate(v), atol=1e-6))
+        True
+        """
         if not hasattr(self, "result_"):
             raise RuntimeError("This HysteresisRegressor is not fitted yet; call fit(v, y) first")
         return self.result_.predict(v)
 
     def score(self, v, y):
-        """Coefficient of determination R^2 of ``predict(v)`` against y."""
+        """Coefficient of determination R^2 of ``predict(v)`` against y.
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input record.
+        y : array_like, shape (n_samples,)
+            Measured output.
+
+        Returns
+        -------
+        float
+            ``1 - sum(e^2) / sum((y - mean y)^2)``; 1 is a perfect fit.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
+        >>> y = PI([1.0, 2.0], [0.5, 0.2], p0=1.0).simulate(v)
+        >>> est = HysteresisRegressor(model="pi", thresholds=[1.0, 2.0]).fit(v, y)
+        >>> round(est.score(v, y), 6)
+        1.0
+        """
         y = as_signal(y, "y")
         e = y - self.predict(v)
         return 1.0 - float(e @ e) / float(np.sum((y - y.mean()) ** 2))
@@ -1287,14 +1440,48 @@ class ModelFit:
     fit_time : float
         Wall time of the fit [s].
     success : bool
+        The optimiser's convergence flag.
     message : str
+        The optimiser's message.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp.differential import BacklashLike
+    >>> v = 4 * np.sin(np.linspace(0, 20, 2000))
+    >>> res = fit_backlash_like(v, BacklashLike(alpha=1.5, c=3.0, B1=1.0).simulate(v))
+    >>> res.n_parameters, bool(res.rmse < 1e-6), bool(res.success)
+    (4, True, True)
     """
 
     def __init__(self, **kw):
         self.__dict__.update(kw)
 
     def predict(self, v, initial_state=None):
-        """The model's output (offset included)."""
+        """The model's output (offset included).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input record.
+        initial_state : ndarray, optional
+            State of the model at the first sample (default:
+            ``model.default_state()``).
+
+        Returns
+        -------
+        ndarray, shape (n_samples,)
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp.differential import BacklashLike
+        >>> v = 4 * np.sin(np.linspace(0, 20, 2000))
+        >>> true = BacklashLike(alpha=1.5, c=3.0, B1=1.0)
+        >>> res = fit_backlash_like(v, true.simulate(v))
+        >>> bool(np.allclose(res.predict(v), true.simulate(v), atol=1e-6))
+        True
+        """
         return self.model.simulate(v, initial_state=initial_state)
 
     def report(self):
@@ -1470,6 +1657,26 @@ def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progr
     model; the regressors are the KP operator outputs (dense rows, built in
     the compiled kernel block by block).
 
+    Parameters
+    ----------
+    v, y : array_like, shape (n_samples,)
+        Input and measured output, simulated from the KP model's default
+        state.
+    n : int
+        Cells per axis (n (n + 1) / 2 weights).
+    input_range : (float, float), optional
+        Grid interval; default the range of v.
+    regularization : float
+        Ridge weight in scaled units, as in :func:`fit_preisach`.
+    solver : str, optional
+        cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS).
+    progress : bool
+        Progress bar on stderr.
+
+    Returns
+    -------
+    ModelFit
+
     Examples
     --------
     >>> import numpy as np
@@ -1561,7 +1768,8 @@ def fit_bouc_wen(v, y, gain=True, n_exponent=None, max_nfev=200):
 
     Parameters
     ----------
-    v, y : array_like
+    v, y : array_like, shape (n_samples,)
+        Input and measured output.
     gain : bool
         Fit the linear term ``gain * v`` (needed for piezo loops, which do
         not saturate); False fits eq. 3 alone.
@@ -1569,6 +1777,10 @@ def fit_bouc_wen(v, y, gain=True, n_exponent=None, max_nfev=200):
         Fix n instead of fitting it.
     max_nfev : int
         Budget of residual evaluations per start.
+
+    Returns
+    -------
+    ModelFit
 
     Examples
     --------
@@ -1635,6 +1847,17 @@ def fit_backlash_like(v, y, max_nfev=200):
     slope k of the line through the loop, ``(c - B1) / alpha`` = the loop's
     half-height H.
 
+    Parameters
+    ----------
+    v, y : array_like, shape (n_samples,)
+        Input and measured output.
+    max_nfev : int
+        Budget of residual evaluations per start (two starts).
+
+    Returns
+    -------
+    ModelFit
+
     Examples
     --------
     >>> import numpy as np
@@ -1667,14 +1890,25 @@ def fit_duhem(v, y, f1, f2, params0, bounds=(-np.inf, np.inf), max_step=None, ga
 
     Parameters
     ----------
+    v, y : array_like, shape (n_samples,)
+        Input and measured output.
     f1, f2 : callable
-        Shape functions (numba-compilable ones run fast).
+        Shape functions ``f(w, v, p)`` of the Duhem model for increasing
+        and decreasing input (numba-compilable ones run fast).
     params0 : array_like
         Starting parameters (or a list of starting points: the best fit wins).
     bounds : (lower, upper)
         Bounds of the parameters, as for ``least_squares``.
     max_step : float, optional
         RK4 sub-step in the input; default 1/200 of the range of v.
+    gain : bool
+        Fit a linear term ``gain * v`` (>= 0) beside w.
+    max_nfev : int
+        Budget of residual evaluations per start.
+
+    Returns
+    -------
+    ModelFit
 
     Examples
     --------
@@ -1707,10 +1941,30 @@ def fit_duhem(v, y, f1, f2, params0, bounds=(-np.inf, np.inf), max_step=None, ga
 
 
 class ModelComparison(list):
-    """Rows of :func:`compare_models` (a list of dicts) with a readable table."""
+    """Rows of :func:`compare_models` (a list of dicts) with a readable table.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from hystcomp.differential import BacklashLike
+    >>> v = 4 * np.sin(np.linspace(0, 20, 2000))
+    >>> res = compare_models(v, BacklashLike(1.5, 3.0, 1.0).simulate(v), models=("backlash_like",))
+    >>> res[0]["name"], res[0]["n_parameters"]
+    ('backlash_like', 4)
+    >>> print(res.table().splitlines()[0])
+    model           params   train rms  held-out rms  held-out max  fit time [s]
+    """
 
     def table(self):
-        """The comparison as a fixed-width text table (str)."""
+        """The comparison as a fixed-width text table (str).
+
+        Examples
+        --------
+        >>> rows = ModelComparison([{"name": "pi", "n_parameters": 3, "train_rms": 0.1, "rms": 0.2,
+        ...                          "max": 0.5, "fit_time": 0.01}])
+        >>> print(rows.table().splitlines()[-1])
+        pi                   3         0.1           0.2           0.5          0.01
+        """
         head = f"{'model':<14}{'params':>8}{'train rms':>12}{'held-out rms':>14}{'held-out max':>14}{'fit time [s]':>14}"
         lines = [head, "-" * len(head)]
         for r in self:
@@ -1740,7 +1994,8 @@ def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20
 
     Parameters
     ----------
-    v, y : array_like
+    v, y : array_like, shape (n_samples,)
+        Input and measured output (one record).
     models : sequence of str
         Among "pi" (:func:`fit_weights`, PI model), "mgpi" (:func:`fit`,
         tanh envelope), "preisach", "kp" (:func:`fit_preisach`,
@@ -1750,6 +2005,7 @@ def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20
     n_cells, n_thresholds : int
         Grid of the Preisach/KP planes; thresholds of the PI/mGPI models.
     max_train_samples : int
+        Largest number of training samples after decimation.
     train : (int, int), optional
         Sample indices ``(start, split)`` of the training part (e.g. to skip
         a start-up transient); overrides `train_fraction`.  The held-out

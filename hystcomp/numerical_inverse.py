@@ -44,6 +44,11 @@ class NumericalInverse:
     model : Preisach, KP, BoucWen, BacklashLike or Duhem
         The model to invert; Preisach and KP need non-negative weights.
     on_unreachable : {"clip", "raise"}
+        For a desired output the model cannot reach with inputs in
+        `input_limits`: "clip" outputs the input of the nearest reachable
+        output and warns (:class:`~hystcomp.inverses.UnreachableWarning`);
+        "raise" raises ValueError.  ``last_unreachable`` holds
+        ``(count, first index)`` of the last call.
     input_limits : (float, float), optional
         Bounds of the compensator output.  Default: the grid's input range
         (Preisach, KP), else unbounded.
@@ -96,7 +101,18 @@ class NumericalInverse:
         self.last_unreachable = (0, -1)
 
     def default_state(self):
-        """``[last input 0, the model's default state]``."""
+        """``[last input 0, the model's default state]``.
+
+        Returns
+        -------
+        ndarray, shape (n_states,)
+
+        Examples
+        --------
+        >>> from hystcomp.differential import BacklashLike
+        >>> BacklashLike(alpha=1.0, c=3.0, B1=1.0).exact_inverse().default_state().tolist()
+        [0.0, 0.0, 0.0]
+        """
         return np.concatenate([[0.0], self.model.default_state()])
 
     def simulate(self, u, initial_state=None, return_state=False):
@@ -109,6 +125,40 @@ class NumericalInverse:
         initial_state : array_like, optional
             ``[v_prev, *model_state]``; default :meth:`default_state`.
         return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        v : ndarray, shape (n,)
+            Compensator output (the model's input).
+        state : ndarray, shape (n_states,)
+            Final ``[v_prev, *model_state]``; only with ``return_state=True``.
+
+        Warns
+        -----
+        UnreachableWarning
+            With ``on_unreachable="clip"``, when some targets are out of reach.
+
+        Raises
+        ------
+        ValueError
+            With ``on_unreachable="raise"``, when some targets are out of reach.
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp.differential import BacklashLike
+        >>> m = BacklashLike(alpha=1.0, c=3.0, B1=1.0)
+        >>> comp = m.exact_inverse(input_limits=(-1.0, 1.0))
+        >>> v = comp.simulate([0.0, 1.5])
+        >>> np.round(m.simulate(v), 9).tolist()
+        [0.0, 1.5]
+        >>> import warnings
+        >>> with warnings.catch_warnings():
+        ...     warnings.simplefilter("ignore")
+        ...     v = comp.simulate([0.0, 10.0])   # 10 needs v > 1: clipped
+        >>> v.tolist(), comp.last_unreachable
+        ([0.0, 1.0], (1, 1))
         """
         target = as_signal(u, "u")
         st = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)

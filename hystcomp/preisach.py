@@ -38,6 +38,20 @@ __all__ = ["Preisach", "KP", "preisach_grid"]
 def preisach_grid(input_range, n):
     """Cell centres c_j and edges of the grid on ``input_range`` with n cells.
 
+    Parameters
+    ----------
+    input_range : (float, float)
+        ``(v_min, v_max)``, finite with ``v_min < v_max``.
+    n : int
+        Number of cells; their width is ``h = (v_max - v_min) / n``.
+
+    Returns
+    -------
+    centres : ndarray, shape (n,)
+        ``c_j = v_min + (j + 1/2) h``.
+    edges : ndarray, shape (n + 1,)
+        ``v_min + j h``.
+
     Examples
     --------
     >>> c, e = preisach_grid((-1.0, 1.0), 4)
@@ -135,7 +149,26 @@ class _PlaneModel(HysteresisModel):
 
     def exact_inverse(self, on_unreachable="clip", input_limits=None):
         """Numerical inverse compensator (closest match / monotone solve per
-        sample), :class:`hystcomp.numerical_inverse.NumericalInverse`."""
+        sample), :class:`hystcomp.numerical_inverse.NumericalInverse`.
+
+        Parameters
+        ----------
+        on_unreachable : {"clip", "raise"}
+            What to do with a desired output outside the reachable range,
+            as in :class:`~hystcomp.numerical_inverse.NumericalInverse`.
+        input_limits : (float, float), optional
+            Bounds of the compensator output; default ``input_range``.
+
+        Returns
+        -------
+        NumericalInverse
+
+        Examples
+        --------
+        >>> m = Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> m.exact_inverse().input_limits
+        (-1.0, 1.0)
+        """
         from .numerical_inverse import NumericalInverse
 
         return NumericalInverse(self, on_unreachable=on_unreachable, input_limits=input_limits)
@@ -160,6 +193,22 @@ class _PlaneModel(HysteresisModel):
     def from_density(cls, density, input_range, n, offset=0.0):
         """Discretise a density mu(alpha, beta): ``mu_ij = density(c_i, c_j) h^2``
         (half that on the diagonal, whose cells are half inside the triangle).
+
+        Parameters
+        ----------
+        density : callable
+            ``density(alpha, beta)``, vectorised over arrays of cell centres.
+        input_range : (float, float)
+            ``(v_min, v_max)`` of the grid.
+        n : int
+            Cells per axis.
+        offset : float, optional
+            Added to the output.
+
+        Returns
+        -------
+        Preisach or KP
+            A model of the class it is called on.
 
         Examples
         --------
@@ -229,23 +278,91 @@ class Preisach(_PlaneModel):
         self._table = 2.0 * cums - cums[:, -1][:, None]
 
     def level(self, v):
-        """Input level ``L(v) = #{j : c_j <= v}`` (0..n), what the relays see."""
+        """Input level ``L(v) = #{j : c_j <= v}`` (0..n), what the relays see.
+
+        Parameters
+        ----------
+        v : float or array_like
+            Input value(s).
+
+        Returns
+        -------
+        int or ndarray of int
+            The level(s), rounded to the nearest cell edge.
+
+        Examples
+        --------
+        >>> m = Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> m.level([-1.0, -0.3, 0.0, 0.9]).tolist(), m.level(0.6)
+        ([0, 1, 2, 4], 3)
+        """
         x = np.asarray(v, dtype=np.float64)
         L = np.clip(np.floor((x - self.v_min) / self.h + 0.5), 0, self.n).astype(np.int64)
         return int(L) if L.ndim == 0 else L
 
     def default_state(self):
-        """Demagnetised staircase: relay (i, j) up iff ``c_i + c_j <= 0``."""
+        """Demagnetised staircase: relay (i, j) up iff ``c_i + c_j <= 0``.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            ``k_i``, the number of up relays of alpha row i.
+
+        Examples
+        --------
+        >>> Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4).default_state().tolist()
+        [1.0, 2.0, 2.0, 1.0]
+        """
         c = self.levels
         k = np.array([np.count_nonzero(c[: i + 1] + c[i] <= 0.0) for i in range(self.n)], dtype=np.float64)
         return k
 
     def saturated_state(self, positive=False):
-        """All relays down (negative saturation) or all up."""
+        """All relays down (negative saturation) or all up.
+
+        Parameters
+        ----------
+        positive : bool
+            True: every relay up (positive saturation, after ``v >= v_max``);
+            False: every relay down (after ``v < v_min``).
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            The state ``k_i`` (0 or i + 1 for every row).
+
+        Examples
+        --------
+        >>> m = Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> m.saturated_state(positive=True).tolist()
+        [1.0, 2.0, 3.0, 4.0]
+        >>> m.simulate([-1.0], initial_state=m.saturated_state()).tolist()   # -(sum of weights)
+        [-2.0]
+        """
         return (np.arange(1, self.n + 1, dtype=np.float64) if positive else np.zeros(self.n))
 
     def relay_states(self, state):
-        """The (n, n) array of relay outputs +1/-1 for a state (0 above the diagonal)."""
+        """The (n, n) array of relay outputs +1/-1 for a state (0 above the diagonal).
+
+        Parameters
+        ----------
+        state : array_like, shape (n,)
+            A Preisach state (staircase counts ``k_i``), e.g. the final state
+            returned by ``simulate(..., return_state=True)``.
+
+        Returns
+        -------
+        ndarray, shape (n, n)
+            Relay (i, j) output at row i (alpha), column j (beta).
+
+        Examples
+        --------
+        >>> m = Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 3)
+        >>> m.relay_states(m.default_state())   # demagnetised: up iff alpha + beta <= 0
+        array([[ 1.,  0.,  0.],
+               [ 1.,  1.,  0.],
+               [ 1., -1., -1.]])
+        """
         k = self._check_state(as_state(state, self.n, "state"))
         j = np.arange(self.n)
         out = np.where(j[None, :] < k[:, None], 1.0, -1.0)
@@ -276,7 +393,32 @@ class Preisach(_PlaneModel):
     def simulate(self, v, initial_state=None, return_state=False):
         """Output of the model for the input samples `v` (see
         :meth:`hystcomp.models.HysteresisModel.simulate`).  Inputs outside
-        ``input_range`` saturate every relay they pass."""
+        ``input_range`` saturate every relay they pass.
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (n,), optional
+            Staircase counts ``k_i`` at the start; default the demagnetised
+            :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Model output.
+        state : ndarray, shape (n,)
+            Final state; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> m = Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> y, s = m.simulate([0.0, 1.0, -0.2], return_state=True)
+        >>> y.tolist(), m.simulate([0.5], initial_state=s).tolist()
+        ([0.5, 2.0, 1.0], [1.25])
+        """
         x = as_signal(v, "v")
         s = self.default_state() if initial_state is None else as_state(initial_state, self.n)
         k = self._check_state(s)
@@ -331,14 +473,43 @@ class KP(_PlaneModel):
             self._prefix[d, diag.size + 1:] = self._prefix[d, diag.size]
 
     def default_state(self):
-        """Play positions 0 (the virgin state at v = 0)."""
+        """Play positions 0 (the virgin state at v = 0).
+
+        Returns
+        -------
+        ndarray, shape (n,)
+
+        Examples
+        --------
+        >>> KP.from_density(lambda a, b: np.ones_like(a), (-1, 1), 3).default_state().tolist()
+        [0.0, 0.0, 0.0]
+        """
         return np.zeros(self.n)
 
     def _check_input_domain(self, x):
         pass
 
     def operator_outputs(self, state):
-        """The (n, n) array of KP operator outputs for a state (0 above the diagonal)."""
+        """The (n, n) array of KP operator outputs for a state (0 above the diagonal).
+
+        Parameters
+        ----------
+        state : array_like, shape (n,)
+            Play positions, one per diagonal ``i - j`` (as returned by
+            ``simulate(..., return_state=True)``).
+
+        Returns
+        -------
+        ndarray, shape (n, n)
+            Operator (i, j) output in [-1, 1] at row i (alpha), column j (beta).
+
+        Examples
+        --------
+        >>> m = KP.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> _, s = m.simulate([0.0, 1.0, -0.2], return_state=True)
+        >>> np.round(m.operator_outputs(s)[1], 6).tolist()
+        [1.0, 0.2, 0.0, 0.0]
+        """
         z = as_state(state, self.n, "state")
         i, j = np.tril_indices(self.n)
         out = np.zeros((self.n, self.n))
@@ -348,7 +519,31 @@ class KP(_PlaneModel):
 
     def simulate(self, v, initial_state=None, return_state=False):
         """Output of the model for the input samples `v` (see
-        :meth:`hystcomp.models.HysteresisModel.simulate`)."""
+        :meth:`hystcomp.models.HysteresisModel.simulate`).
+
+        Parameters
+        ----------
+        v : array_like, shape (n_samples,)
+            Input samples.
+        initial_state : array_like, shape (n,), optional
+            Play positions at the start; default :meth:`default_state`.
+        return_state : bool
+            Also return the final state (to continue a record in chunks).
+
+        Returns
+        -------
+        y : ndarray, shape (n_samples,)
+            Model output.
+        state : ndarray, shape (n,)
+            Final play positions; only with ``return_state=True``.
+
+        Examples
+        --------
+        >>> m = KP.from_density(lambda a, b: np.ones_like(a), (-1, 1), 4)
+        >>> y, s = m.simulate([0.0, 1.0, -0.2], return_state=True)
+        >>> np.round(y, 6).tolist(), np.round(s, 6).tolist()
+        ([0.0, 2.0, 0.5], [-0.2, 0.05, 0.3, 0.25])
+        """
         x = as_signal(v, "v")
         z = self.default_state() if initial_state is None else as_state(initial_state, self.n)
         if not np.all(np.isfinite(z)):

@@ -39,12 +39,36 @@ __all__ = ["Experiment", "identification_experiment", "staircase", "multisine", 
 #: result of :func:`identification_experiment`
 Experiment = namedtuple("Experiment", ["t", "v", "segments"])
 Experiment.__doc__ = """An excitation record: time t [s], input v, and segments, a list of
-(name, t_start, t_end) for each part."""
+(name, t_start, t_end) for each part (a named tuple, returned by
+:func:`identification_experiment`).
+
+Examples
+--------
+>>> exp = identification_experiment(dt=0.01, duration=40.0)
+>>> t, v, segments = exp
+>>> segments[0][0], segments[0][1], t.size == v.size
+('decaying sine', 0.0, True)
+"""
 
 
 def decaying_sine(t, frequency, amplitude=1.0, final_fraction=0.1):
     """``A q^(t/T) sin(2 pi f t)`` decaying from A to ``final_fraction A`` over
     the span of `t` (T its duration).
+
+    Parameters
+    ----------
+    t : array_like, shape (n,)
+        Sample times [s], increasing; the sine starts at ``t[0]``.
+    frequency : float
+        f [Hz].
+    amplitude : float
+        A, the initial amplitude.
+    final_fraction : float
+        q, the amplitude at the end of `t` relative to A.
+
+    Returns
+    -------
+    ndarray, shape (n,)
 
     Examples
     --------
@@ -58,9 +82,20 @@ def decaying_sine(t, frequency, amplitude=1.0, final_fraction=0.1):
     return amplitude * final_fraction ** ((t - t[0]) / T) * np.sin(2 * np.pi * frequency * (t - t[0]))
 
 
-def staircase(n, levels, dt=None):
+def staircase(n, levels):
     """Hold each of `levels` for ``n // len(levels)`` samples (the remainder on
     the last level).
+
+    Parameters
+    ----------
+    n : int
+        Number of samples, at least ``len(levels)``.
+    levels : array_like
+        The levels, in order.
+
+    Returns
+    -------
+    ndarray, shape (n,)
 
     Examples
     --------
@@ -77,6 +112,22 @@ def multisine(t, frequencies, amplitude=1.0, taper=0.1):
     """Sum of equal-amplitude sines with Schroeder phases (low crest factor),
     scaled to peak `amplitude` and tapered to 0 at both ends (cosine ramps
     over the fraction `taper` of the record).
+
+    Parameters
+    ----------
+    t : array_like, shape (n,)
+        Sample times [s], increasing.
+    frequencies : array_like
+        Sine frequencies [Hz].
+    amplitude : float
+        Peak of the result.
+    taper : float
+        Fraction of the record over which each end ramps from 0 (raised
+        cosine).
+
+    Returns
+    -------
+    ndarray, shape (n,)
 
     Examples
     --------
