@@ -332,6 +332,23 @@ def _play_sum_env(v, r, p, p0, z, kind, prm, out, gen):
         out[k] = p0 * _fval(kind, prm, a, b, c, x, gen) + s
 
 
+@njit(cache=True, inline="always")
+def play_step(x, r, widen, z):
+    """One sample of the plays (eq. 13): ``z_i <- max(x - r_i', min(x + r_i', z_i))``
+    with ``r_i' = r_i + widen``; `z` updated in place.
+
+    The play recursion for every kernel outside the fused sums of this module
+    (play regressors, the KP model's diagonals, rate-dependent thresholds).
+    """
+    for i in range(r.size):
+        ri = r[i] + widen
+        lo = x - ri
+        hi = x + ri
+        zi = z[i]
+        zi = lo if zi < lo else (hi if zi > hi else zi)
+        z[i] = zi
+
+
 @njit(cache=True)
 def play_states(v, r, z, out):
     """Play positions for every sample: ``out[k, i] = F_ri[v](t_k)``.
@@ -339,17 +356,11 @@ def play_states(v, r, z, out):
     Used in blocks (bounded memory) for envelopes that have no compiled form
     and to build identification regressors.  `z` is updated in place.
     """
-    n = v.size
     N = r.size
-    for k in range(n):
-        x = v[k]
+    for k in range(v.size):
+        play_step(v[k], r, 0.0, z)
         for i in range(N):
-            zi = z[i]
-            lo = x - r[i]
-            hi = x + r[i]
-            zi = lo if zi < lo else (hi if zi > hi else zi)
-            z[i] = zi
-            out[k, i] = zi
+            out[k, i] = z[i]
 
 
 @njit(cache=True)

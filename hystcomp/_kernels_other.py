@@ -38,6 +38,8 @@ import math
 import numpy as np
 from numba import njit
 
+from ._kernels import play_step
+
 BOUC_WEN = 0
 BACKLASH = 1
 
@@ -238,20 +240,20 @@ def _kp_value(z, vmin, h, prefix, offset):
 
 
 @njit(cache=True)
+def _kp_thresholds(n, h):
+    """Thresholds of the KP diagonals: r_d = d h / 2 (the plays of the ridge operators)."""
+    r = np.empty(n)
+    for d in range(n):
+        r[d] = 0.5 * d * h
+    return r
+
+
+@njit(cache=True)
 def kp_sum(x, vmin, h, prefix, offset, z, y):
     """KP output for every sample; play positions `z` (one per diagonal) updated."""
-    n = z.size
+    r = _kp_thresholds(z.size, h)
     for t in range(x.size):
-        v = x[t]
-        for d in range(n):
-            r = 0.5 * d * h
-            lo = v - r
-            hi = v + r
-            zd = z[d]
-            if zd < lo:
-                z[d] = lo
-            elif zd > hi:
-                z[d] = hi
+        play_step(x[t], r, 0.0, z)
         y[t] = _kp_value(z, vmin, h, prefix, offset)
 
 
@@ -259,18 +261,10 @@ def kp_sum(x, vmin, h, prefix, offset, z, y):
 def kp_regressors(x, vmin, h, z, cell_d, cell_j, A):
     """KP operator outputs rho(z_d - m) for every sample and cell (columns
     ordered by `cell_d`, `cell_j`); `z` updated."""
-    n = z.size
+    r = _kp_thresholds(z.size, h)
     for t in range(x.size):
         v = x[t]
-        for d in range(n):
-            r = 0.5 * d * h
-            lo = v - r
-            hi = v + r
-            zd = z[d]
-            if zd < lo:
-                z[d] = lo
-            elif zd > hi:
-                z[d] = hi
+        play_step(v, r, 0.0, z)
         for c in range(cell_d.size):
             d = cell_d[c]
             q = 2.0 * (z[d] - (vmin + (cell_j[c] + 0.5 + 0.5 * d) * h)) / h
@@ -282,16 +276,9 @@ def kp_regressors(x, vmin, h, z, cell_d, cell_j, A):
 
 
 @njit(cache=True)
-def _kp_trial(z, v, vmin, h, prefix, offset, work):
-    n = z.size
-    for d in range(n):
-        r = 0.5 * d * h
-        zd = z[d]
-        if zd < v - r:
-            zd = v - r
-        elif zd > v + r:
-            zd = v + r
-        work[d] = zd
+def _kp_trial(z, v, r, vmin, h, prefix, offset, work):
+    work[:] = z
+    play_step(v, r, 0.0, work)
     return _kp_value(work, vmin, h, prefix, offset)
 
 
@@ -302,10 +289,11 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
     non-negative weights."""
     n = z.size
     work = np.empty(n)
+    r_diag = _kp_thresholds(n, h)
     for t in range(u.size):
         target = u[t]
-        ylo = _kp_trial(z, vmin, vmin, h, prefix, offset, work)
-        yhi = _kp_trial(z, vmax, vmin, h, prefix, offset, work)
+        ylo = _kp_trial(z, vmin, r_diag, vmin, h, prefix, offset, work)
+        yhi = _kp_trial(z, vmax, r_diag, vmin, h, prefix, offset, work)
         scale = 1e-12 * (abs(ylo) + abs(yhi) + 1.0)
         if target <= ylo:
             v = vmin
@@ -323,7 +311,7 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
             a = vmin
             b = vmax
             # start from a bracket around the previous input when possible
-            yp = _kp_trial(z, vprev, vmin, h, prefix, offset, work)
+            yp = _kp_trial(z, vprev, r_diag, vmin, h, prefix, offset, work)
             if yp == target:
                 a = vprev
                 b = vprev
@@ -335,8 +323,8 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
             # secant point leaves the bracket): the output is piecewise linear
             # in v, so the secant is exact once the bracket holds one linear
             # piece; stop at 1e-13 of the output scale or `tol` in v
-            ya = _kp_trial(z, a, vmin, h, prefix, offset, work) if a != vprev else yp
-            yb = _kp_trial(z, b, vmin, h, prefix, offset, work) if b != vprev else yp
+            ya = _kp_trial(z, a, r_diag, vmin, h, prefix, offset, work) if a != vprev else yp
+            yb = _kp_trial(z, b, r_diag, vmin, h, prefix, offset, work) if b != vprev else yp
             side = 0
             v = b
             while b - a > tol:
@@ -348,7 +336,7 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
                     mid = 0.5 * (a + b)
                 if mid <= a or mid >= b:
                     break
-                ym = _kp_trial(z, mid, vmin, h, prefix, offset, work)
+                ym = _kp_trial(z, mid, r_diag, vmin, h, prefix, offset, work)
                 if abs(ym - target) <= 0.1 * scale:
                     a = mid
                     b = mid
@@ -366,13 +354,7 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
                         ya = target + 0.5 * (ya - target)
                     side = 1
             v = b
-        for d in range(n):
-            r = 0.5 * d * h
-            zd = z[d]
-            if zd < v - r:
-                z[d] = v - r
-            elif zd > v + r:
-                z[d] = v + r
+        play_step(v, r_diag, 0.0, z)
         out[t] = v
         vprev = v
     return vprev

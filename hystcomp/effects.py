@@ -41,6 +41,7 @@ import math
 import numpy as np
 from numba import njit
 
+from ._kernels import play_step
 from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
 from .models import SCHEMA_VERSION, Invertibility, _MODELS, model_from_dict
 
@@ -96,15 +97,9 @@ def _rate_play_states(v, r, beta, dt, z, prev, out):
         rate = abs(x - prev[0]) / dt if prev[1] > 0.5 else 0.0
         prev[0] = x
         prev[1] = 1.0
-        extra = beta * rate
+        play_step(x, r, beta * rate, z)
         for i in range(r.size):
-            ri = r[i] + extra
-            lo = x - ri
-            hi = x + ri
-            zi = z[i]
-            zi = lo if zi < lo else (hi if zi > hi else zi)
-            z[i] = zi
-            out[k, i] = zi
+            out[k, i] = z[i]
 
 
 def lag_bank(v, time_constants, dt, state=None):
