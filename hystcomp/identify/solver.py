@@ -1,0 +1,176 @@
+"""The one constrained least-squares solve of hystcomp's identification."""
+
+import math
+
+import numpy as np
+
+from .._validation import as_scalar, check_choice
+from ._records import _EPS
+
+# the convex weight problem
+# ----------------------------------------------------------------------------
+def _pick_solver(solver):
+    import cvxpy as cp
+
+    installed = cp.installed_solvers()
+    if solver is not None:
+        if solver.upper() not in installed:
+            raise ValueError(
+                f"Parameter solver is {solver!r} but the installed cvxpy solvers are {installed}"
+            )
+        return solver.upper()
+    for name in ("CLARABEL", "OSQP", "SCS", "ECOS"):
+        if name in installed:
+            return name
+    raise RuntimeError(f"no QP solver among the installed cvxpy solvers {installed}")
+
+
+class _WeightQP:
+    """minimize (||R x - d||^2 + lam ||M x||^2)^(1/2) subject to C x >= lb, x[fixed] = 0.
+
+    R, d, C, M are cvxpy Parameters (DPP), so repeated solves with new data
+    (variable projection) reuse the compiled problem.
+    """
+
+    def __init__(self, m, n_ineq, n_pen, fixed, solver):
+        import cvxpy as cp
+
+        self.cp = cp
+        self.x = cp.Variable(m)
+        self.R = cp.Parameter((m, m))
+        self.d = cp.Parameter(m)
+        self.C = cp.Parameter((n_ineq, m))
+        self.lb = cp.Parameter(n_ineq)
+        # minimise the 2-norm of the stacked residual (same minimiser as the
+        # sum of squares, but the solver's gap tolerance then applies to the
+        # RMS rather than to its square: ~1e-8 relative instead of ~1e-4)
+        res = self.R @ self.x - self.d
+        if n_pen:
+            self.M = cp.Parameter((n_pen, m))
+            res = cp.hstack([res, self.M @ self.x])
+        obj = cp.norm(res, 2)
+        cons = [self.C @ self.x >= self.lb]
+        fixed = np.flatnonzero(fixed)
+        if fixed.size:
+            cons.append(self.x[fixed] == 0)
+        self.problem = cp.Problem(cp.Minimize(obj), cons)
+        self.solver = solver
+
+    def solve(self, R, d, C, lb, M=None, lam=0.0):
+        self.lb.value = lb
+        self.R.value = R
+        self.d.value = d
+        self.C.value = C
+        if M is not None:
+            self.M.value = math.sqrt(lam) * M
+        try:
+            self.problem.solve(solver=self.solver)
+        except self.cp.error.SolverError as exc:
+            return None, "solver_error", str(exc)
+        return self.x.value, self.problem.status, ""
+
+
+def _split_gram(G, b, free):
+    """R, d with R^T R = G and R^T d = b on the free columns (eigen
+    factorisation: robust when G is singular)."""
+    m = G.shape[0]
+    R = np.zeros((m, m))
+    d = np.zeros(m)
+    idx = np.flatnonzero(free)
+    Gf = G[np.ix_(idx, idx)]
+    lam, U = np.linalg.eigh(0.5 * (Gf + Gf.T))
+    tol = max(lam.max(), 0.0) * m * 1e-13
+    pos = lam > tol
+    sq = np.sqrt(lam[pos])
+    Rf = sq[:, None] * U[:, pos].T
+    df = (U[:, pos].T @ b[idx]) / sq
+    R[np.ix_(np.arange(Rf.shape[0]), idx)] = Rf
+    d[: Rf.shape[0]] = df
+    return R, d
+
+
+class _Problem:
+    """The scaled weight problem for one set of thresholds and settings."""
+
+    def __init__(self, r, constraints, regularization, offset, solver):
+        self.r = r
+        self.constraints = check_choice(constraints, "constraints", ("nonnegative", "invertible"))
+        self.offset = bool(offset)
+        self.lam = 0.0
+        self.reg = None
+        if regularization is not None:
+            ok = (isinstance(regularization, (tuple, list)) and len(regularization) == 2
+                  and regularization[0] in ("ridge", "smooth"))
+            if not ok:
+                raise ValueError(
+                    f"Parameter regularization is {regularization!r} but should be None, "
+                    "('ridge', lam) or ('smooth', lam)"
+                )
+            self.reg = regularization[0]
+            self.lam = as_scalar(regularization[1], "regularization[1]", nonnegative=True)
+        self.solver = _pick_solver(solver)
+        self._qp = {}
+
+    def solve(self, G, b, yy, wsum, unreached, lead=1):
+        """Scaled solve; columns are `lead` (0 or 1: p0 or the H coefficient),
+        the N operator weights, then the offset if any."""
+        N = self.r.size
+        K = lead + N
+        m = G.shape[0]
+        # equilibrate: column RMS s_j, output RMS sigma -> dimensionless problem
+        s = np.sqrt(np.maximum(np.diag(G) / wsum, 0.0))
+        s[s == 0] = 1.0
+        sigma = math.sqrt(yy / wsum) or 1.0
+        Gs = G / np.outer(s, s) / wsum
+        bs = b / s / (wsum * sigma)
+        free = np.ones(m, bool)
+        free[lead:K] = ~unreached
+        R, d = _split_gram(Gs, bs, free)
+        # constraints C x >= lb (in scaled units x_j = s_j p_j / sigma); the
+        # lead weight (p0, or the coefficient of H) is kept >= eps, the
+        # operator weights (or, "invertible", the partial sums) >= 0 / eps.
+        # Without a lead column (GPI with H = None) every bound is 0.
+        if self.constraints == "nonnegative":
+            C = np.zeros((K, m))
+            C[np.arange(K), np.arange(K)] = 1.0
+            lb = np.zeros(K)
+            if lead:
+                lb[0] = _EPS
+        else:
+            # partial sums p0 + p_1 + ... + p_k >= eps, rows scaled by s_0
+            C = np.tril(np.ones((K, K))) * (s[0] / s[:K])[None, :]
+            C = np.hstack([C, np.zeros((K, m - K))])
+            lb = np.full(K, _EPS if lead else 0.0)
+        M = None
+        if self.reg == "ridge":
+            M = np.zeros((N, m))
+            M[np.arange(N), lead + np.arange(N)] = 1.0
+        elif self.reg == "smooth":
+            # first differences of the density p_i / (r_i - r_{i-1}), made
+            # dimensionless with r_N and the median column RMS
+            dr = np.diff(np.concatenate([[0.0], self.r]))
+            scale = self.r[-1] * float(np.median(s[lead:K]))
+            D = np.zeros((max(N - 1, 1), m))
+            for i in range(N - 1):
+                D[i, lead + i] = -scale / (s[lead + i] * dr[i])
+                D[i, lead + 1 + i] = scale / (s[lead + 1 + i] * dr[i + 1])
+            M = D
+        key = (m, lead, C.shape[0], 0 if M is None else M.shape[0], tuple(~free))
+        qp = self._qp.get(key)
+        if qp is None:
+            qp = self._qp[key] = _WeightQP(m, C.shape[0], key[3], ~free, self.solver)
+        x, status, err = qp.solve(R, d, C, lb, M, self.lam)
+        if x is None or status in ("infeasible", "unbounded", "infeasible_inaccurate", "unbounded_inaccurate"):
+            raise RuntimeError(
+                f"the weight problem was not solved (cvxpy status {status!r} with solver "
+                f"{self.solver}{': ' + err if err else ''})"
+            )
+        x = np.where(free, x, 0.0)
+        theta = sigma * x / s
+        # training MSE from the Gram form (exact up to rounding)
+        mse = max(float(x @ Gs @ x - 2 * bs @ x) * sigma ** 2 + yy / wsum, 0.0)
+        cond = float(np.linalg.cond(Gs[np.ix_(free, free)]))
+        return theta, status, mse, cond
+
+
+# ----------------------------------------------------------------------------
