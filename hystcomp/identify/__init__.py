@@ -36,7 +36,7 @@ from .other_models import (ModelComparison, ModelFit, compare_models, fit_backla
 from .weights import FitResult, ValidationResult, compensation_error, fit_weights, validate
 
 __all__ = ["FitResult", "EnvelopeFitResult", "HysteresisRegressor", "fit_weights", "fit", "validate",
-           "compensation_error", "ValidationResult", "ModelFit", "ModelComparison", "fit_preisach", "fit_kp",
+           "compensation_error", "ModelFit", "ModelComparison", "fit_preisach", "fit_kp",
            "fit_bouc_wen", "fit_backlash_like", "fit_duhem", "compare_models"]
 
 # the public objects belong to hystcomp.identify (the documented API and the
