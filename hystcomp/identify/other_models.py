@@ -6,7 +6,7 @@ import numpy as np
 
 from .._validation import as_scalar, as_signal, check_choice
 from ._records import _BLOCK
-from .solver import _pick_solver, _split_gram, _WeightQP
+from .solver import _pick_solver, _split_gram, solve_weights
 from .envelope_fit import fit
 from .weights import fit_weights
 
@@ -102,8 +102,8 @@ def _plane_solve(G, b, yy, wsum, regularization, solver):
         C[np.arange(K), np.arange(K)] = 1.0
         M = np.zeros((K, m))
         M[np.arange(K), np.arange(K)] = 1.0
-        qp = _WeightQP(m, K, K, ~free, _pick_solver(solver))
-        x, status, err = qp.solve(R, d, C, np.zeros(K), M, regularization)
+        x, status, err = solve_weights(R, d, C=C, lb=np.zeros(K), M=M, lam=regularization, fixed=~free,
+                                       solver=solver)
     else:
         # large planes (a 50 x 50 grid has 1,275 cells): the parametrised
         # (DPP) form of _WeightQP would build a tensor of m^2 x m^2 entries;

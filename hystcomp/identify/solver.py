@@ -1,5 +1,23 @@
-"""The one constrained least-squares solve of hystcomp's identification."""
+"""The one constrained least-squares solve of hystcomp's identification.
 
+:func:`solve_weights` is the entry point every front end calls
+(:func:`~hystcomp.identify.fit_weights`, :func:`~hystcomp.identify.fit`,
+:func:`hystcomp.diagnose.diagnose` through :mod:`hystcomp.identify.search`):
+
+``minimize ||R x - d||^2 + lam ||M x||^2  subject to  lower <= x <= upper,
+C x >= lb, x[fixed] = 0``
+
+on a factored, equilibrated problem (``R^T R = G``, ``R^T d = b`` from the Gram
+matrix of the regressor columns).  With linear inequality constraints or a
+penalty it is a cvxpy problem (DPP parameters, compiled once and cached per
+shape, so a variable-projection loop pays the compilation once); with bounds
+only it is solved exactly by bounded-variable least squares (an active-set
+method, :func:`scipy.optimize.lsq_linear` with ``method="bvls"``), because
+cvxpy's per-call overhead of tens of milliseconds would dominate the
+variable-projection loops of :func:`hystcomp.diagnose.diagnose`.
+"""
+
+import functools
 import math
 
 import numpy as np
@@ -9,6 +27,7 @@ from ._records import _EPS
 
 # the convex weight problem
 # ----------------------------------------------------------------------------
+@functools.lru_cache(maxsize=None)
 def _pick_solver(solver):
     import cvxpy as cp
 
@@ -155,11 +174,8 @@ class _Problem:
                 D[i, lead + i] = -scale / (s[lead + i] * dr[i])
                 D[i, lead + 1 + i] = scale / (s[lead + 1 + i] * dr[i + 1])
             M = D
-        key = (m, lead, C.shape[0], 0 if M is None else M.shape[0], tuple(~free))
-        qp = self._qp.get(key)
-        if qp is None:
-            qp = self._qp[key] = _WeightQP(m, C.shape[0], key[3], ~free, self.solver)
-        x, status, err = qp.solve(R, d, C, lb, M, self.lam)
+        x, status, err = solve_weights(R, d, C=C, lb=lb, M=M, lam=self.lam, fixed=~free, solver=self.solver,
+                                       cache=self._qp)
         if x is None or status in ("infeasible", "unbounded", "infeasible_inaccurate", "unbounded_inaccurate"):
             raise RuntimeError(
                 f"the weight problem was not solved (cvxpy status {status!r} with solver "
@@ -174,3 +190,96 @@ class _Problem:
 
 
 # ----------------------------------------------------------------------------
+
+
+def solve_weights(R, d, lower=None, upper=None, C=None, lb=None, M=None, lam=0.0, fixed=None, solver=None,
+                  cache=None):
+    """The constrained least-squares solve of every identification front end.
+
+    ``minimize ||R x - d||^2 + lam ||M x||^2`` subject to
+    ``lower <= x <= upper``, ``C x >= lb`` and ``x[fixed] = 0``.
+
+    Parameters
+    ----------
+    R : ndarray, shape (m, m)
+        Factor of the (equilibrated) Gram matrix, ``R^T R = G``.
+    d : ndarray, shape (m,)
+        ``R^T d = b`` (the right-hand side in the factored form).
+    lower, upper : ndarray, shape (m,), optional
+        Bounds (``-inf`` / ``inf`` for none); default unbounded.
+    C : ndarray, shape (p, m), optional
+        Linear inequality constraints ``C x >= lb`` (e.g. the partial sums of
+        an invertible PI model).
+    lb : ndarray, shape (p,), optional
+        Their right-hand side (required with `C`).
+    M : ndarray, shape (q, m), optional
+        Penalty rows (ridge, smoothness).
+    lam : float
+        Penalty weight.
+    fixed : ndarray of bool, shape (m,), optional
+        Coefficients held at 0.
+    solver : str, optional
+        cvxpy solver name (used only with `C` or `M`); default the first
+        installed of CLARABEL, OSQP, SCS, ECOS.
+    cache : dict, optional
+        Where compiled cvxpy problems are kept between calls (keyed by shape).
+
+    Returns
+    -------
+    x : ndarray or None
+        The minimiser (None when the solver failed).
+    status : str
+        ``"optimal"`` or the solver's status.
+    message : str
+        The solver's error message, if any.
+
+    Examples
+    --------
+    >>> R = np.eye(2); d = np.array([1.0, -1.0])
+    >>> x, status, _ = solve_weights(R, d, lower=np.zeros(2))
+    >>> np.round(x, 9).tolist(), status
+    ([1.0, 0.0], 'optimal')
+    """
+    m = R.shape[1]
+    if C is None and M is None:
+        from scipy.optimize import lsq_linear
+
+        lo = np.full(m, -np.inf) if lower is None else np.array(lower, dtype=np.float64)
+        hi = np.full(m, np.inf) if upper is None else np.array(upper, dtype=np.float64)
+        if fixed is not None:
+            lo[fixed] = 0.0
+            hi[fixed] = 0.0
+            # lsq_linear needs lo < hi: a fixed coefficient gets a zero column instead
+            R = R.copy()
+            R[:, fixed] = 0.0
+            lo[fixed], hi[fixed] = -1.0, 1.0
+        if np.all(np.isinf(lo)) and np.all(np.isinf(hi)):
+            x = np.linalg.lstsq(R, d, rcond=None)[0]
+        else:
+            x = lsq_linear(R, d, bounds=(lo, hi), method="bvls", tol=1e-12).x
+        if fixed is not None:
+            x[fixed] = 0.0
+        return x, "optimal", ""
+    if C is None:
+        C = np.zeros((0, m))
+        lb = np.zeros(0)
+    if lower is not None or upper is not None:
+        rows, rhs = [C], [lb]
+        for bound, sign in ((lower, 1.0), (upper, -1.0)):
+            if bound is None:
+                continue
+            bound = np.asarray(bound, dtype=np.float64)
+            k = np.flatnonzero(np.isfinite(bound))
+            E = np.zeros((k.size, m))
+            E[np.arange(k.size), k] = sign
+            rows.append(E)
+            rhs.append(sign * bound[k])
+        C, lb = np.vstack(rows), np.concatenate(rhs)
+    fixed = np.zeros(m, bool) if fixed is None else np.asarray(fixed, bool)
+    solver = _pick_solver(solver)
+    key = (m, C.shape[0], 0 if M is None else M.shape[0], tuple(fixed), solver)
+    cache = {} if cache is None else cache
+    qp = cache.get(key)
+    if qp is None:
+        qp = cache[key] = _WeightQP(m, C.shape[0], key[2], fixed, solver)
+    return qp.solve(R, d, C, lb, M, lam)

@@ -1,0 +1,83 @@
+"""Compiled kernels of the model parts of :mod:`hystcomp.identify.parts`.
+
+One recursion serves every hysteresis core the parts build: modified plays
+(eq. 23) with thresholds ``r_i + beta |dx/dt|`` (rate-dependent thresholds,
+Al Janaideh et al. 2009) and envelopes
+
+``gl(s) = rho f(s; q_l, b_l)``, ``gr(s) = f(s; q_r, b_r)``,
+``f(s; q, b) = tanh(b (s + q s^2)) / b`` (``s + q s^2`` for ``b = 0``),
+
+in units where the input scale is 1.  With ``rho = 1``, ``q = b = 0`` and
+``beta = 0`` the outputs are the classical plays of
+:func:`hystcomp._kernels.play_states` (eq. 18).
+"""
+
+import math
+
+import numpy as np
+from numba import njit
+
+
+@njit(cache=True, inline="always")
+def _env(s, q, b):
+    u = s + q * s * s
+    if b == 0.0:
+        return u
+    return math.tanh(b * u) / b
+
+
+@njit(cache=True)
+def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out):
+    """out[k, i] = modified play i after sample k (see the module docstring).
+
+    x : input (scaled), r : thresholds (scaled, r[0] may be 0), beta : rate
+    coefficient [s] (0: rate independent), inv_dt : 1/dt (unused when beta is
+    0), preload : inputs applied at rest (rate 0) before the first sample,
+    starting from the virgin state ``w = 0``.
+    """
+    N = r.size
+    w = np.zeros(N)
+    for k in range(preload.size):
+        xk = preload[k]
+        for i in range(N):
+            lo = rho * _env(xk - r[i], ql, bl)
+            hi = _env(xk + r[i], qr, br)
+            wi = w[i]
+            if wi > hi:
+                wi = hi
+            if wi < lo:
+                wi = lo
+            w[i] = wi
+    prev = x[0] if x.size else 0.0
+    for k in range(x.size):
+        xk = x[k]
+        extra = beta * abs(xk - prev) * inv_dt if beta != 0.0 else 0.0
+        prev = xk
+        for i in range(N):
+            ri = r[i] + extra
+            lo = rho * _env(xk - ri, ql, bl)
+            hi = _env(xk + ri, qr, br)
+            wi = w[i]
+            if wi > hi:
+                wi = hi
+            if wi < lo:
+                wi = lo
+            w[i] = wi
+            out[k, i] = wi
+
+
+@njit(cache=True)
+def fractional_delay(x, d, out):
+    """out[k] = x at sample k - d (linear interpolation; x[0] before the start)."""
+    n = x.size
+    for k in range(n):
+        s = k - d
+        if s <= 0.0:
+            out[k] = x[0]
+        else:
+            j = int(math.floor(s))
+            f = s - j
+            if j + 1 < n:
+                out[k] = (1.0 - f) * x[j] + f * x[j + 1]
+            else:
+                out[k] = x[n - 1]
