@@ -4,7 +4,7 @@
 
     hystcomp demo   [--out DIR] [...]  # closed-loop study: five scenarios, exact and analytic compensators
     hystcomp thesis [--out DIR]        # all thesis figures + section 5 error table
-    hystcomp diagnose DATA.csv [--time t --input v --output y] [--json] [--plots DIR]
+    hystcomp diagnose DATA.csv [--time t | --no-time] [--input v --output y] [--json] [--plots DIR]
     hystcomp --version
 
 ``demo`` runs the thesis's mGPI actuator in front of a piezo stage through the
@@ -105,8 +105,10 @@ def build_parser():
     demo.add_arguments(sub.add_parser("demo", help=text, description=text))
     from . import diagnose
 
-    text = ("find what a fitted PI model misses in measured data (rate dependence, creep, drift, "
-            "asymmetry, saturation), add what pays on held-out data, report the gap per step")
+    text = ("find what a fitted PI model misses in a measured record (rate dependence, creep, drift, "
+            "gain drift, asymmetry, saturation, output saturation, delay, initial state): name an effect "
+            "only when its signature is in the residual and its model part pays on held-out data; "
+            "verdict 'explained' or 'unexplained' against the record's own noise floor")
     diagnose.add_arguments(sub.add_parser("diagnose", help=text, description=text))
     text = ("reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
             "a printed table of the section 5 compensation errors and its CSV")

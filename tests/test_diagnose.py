@@ -1,104 +1,213 @@
-"""hystcomp.diagnose, blind: only (t, v, y) of simulated measurements with one
-hidden effect go in; the effect must be named first and the held-out RMS must
-at least halve; data without an effect must give none in >= 19 of 20 seeds.
+"""hystcomp.diagnose, blind: only (t, v, y) go in.
 
-The records are the 40 s identification experiment at dt = 0.01 s (4000
-samples) -- the full confusion matrix over many seeds at dt = 0.004 s lives in
-examples/diagnose_hidden_effects.py and docs/diagnose.md.
+Records of the library's own generator (hystcomp.datasets.hidden_effect_data,
+40 s at dt = 0.01 s) with one hidden effect must get that effect named first;
+clean records no effect and the verdict "explained"; records the model cannot
+explain the verdict "unexplained" with what remains.  Measured records: the
+piezo record (hystcomp.data) and B-H loops without a time axis
+(tests/data/szewczyk_bh, see its SOURCE.md).  The realistic generator of
+tests/realistic/ is evaluated by benchmarks/eval_diagnose_realistic.py (a
+table in docs/diagnose.md), not here: it takes minutes.
 """
 
 import json
+import os
+import re
 
 import numpy as np
 import pytest
 
-from hystcomp.datasets import EFFECTS, hidden_effect_data
-from hystcomp.diagnose import ALL, diagnose, evidence
-from hystcomp.effects import Parallel
+from hystcomp.datasets import EFFECTS as LIB_EFFECTS
+from hystcomp.datasets import hidden_effect_data
+from hystcomp.diagnose import ALL, EFFECTS, diagnose, evidence
+from hystcomp.diagnose.record import find_holds
+from hystcomp.identify.search import PartsModel
 from hystcomp.signals import identification_experiment
 
 DT = 0.01
+HERE = os.path.dirname(__file__)
 
 
-@pytest.mark.parametrize("seed", [0, 1])
-@pytest.mark.parametrize("effect", EFFECTS)
-def test_names_the_hidden_effect_and_halves_the_gap(effect, seed):
-    d = hidden_effect_data(effect, seed=seed, dt=DT)
-    rep = diagnose(d.t, d.v, d.y, progress=False)
-    assert rep.effects and rep.effects[0] == effect, (d.mechanism, rep.summary())
-    assert rep.rms_after <= 0.5 * rep.rms_before, (d.mechanism, rep.summary())
-    # the gap closes down to about the sensor noise (never below it by more than chance:
-    # 1200 held-out samples give the noise RMS to +-5 %; 0.9 leaves margin)
-    assert rep.rms_after > 0.9 * d.noise
+def test_canonical_effect_names():
+    assert set(EFFECTS) == {"rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "saturation",
+                            "output_saturation", "delay", "initial_state"}
+    assert ALL == EFFECTS
 
 
-def test_no_false_alarms_in_19_of_20_seeds():
-    false = []
-    for seed in range(100, 120):
+@pytest.mark.parametrize("effect", LIB_EFFECTS)
+def test_library_generator_effect_named_first(effect):
+    # seeds 20 and 21 were not looked at while the detector was tuned
+    named = 0
+    for seed in (20, 21):
+        d = hidden_effect_data(effect, seed=seed, dt=DT)
+        rep = diagnose(d.t, d.v, d.y, progress=False)
+        named += rep.effects[:1] == [effect]
+        assert rep.rms_after <= 0.5 * rep.rms_before, (d.mechanism, rep.report())
+        # never closer than chance below the sensor noise (1200 held-out samples: +-5 %)
+        assert rep.rms_after > 0.85 * d.noise
+    assert named == 2, effect
+
+
+def test_clean_records_explained_without_effects():
+    bad = []
+    for seed in range(120, 128):
         d = hidden_effect_data(None, seed=seed, dt=DT)
         rep = diagnose(d.t, d.v, d.y, progress=False)
-        if rep.effects:
-            false.append((seed, rep.effects))
+        if rep.effects or rep.verdict != "explained":
+            bad.append((seed, rep.effects, rep.verdict))
         else:
-            assert rep.rms_after == rep.rms_before and "none" in rep.summary()
-    assert len(false) <= 1, false
+            # the noise floor comes from the record itself: within 20 % of the true noise
+            assert rep.noise_floor == pytest.approx(d.noise, rel=0.2)
+            assert rep.rms_heldout <= 1.5 * rep.noise_floor
+    assert len(bad) <= 1, bad
 
 
-def test_report_contents_and_final_model():
+def test_report_json_and_model_reproduces_heldout_rms():
     d = hidden_effect_data("drift", seed=7, dt=DT)
     rep = diagnose(d.t, d.v, d.y, progress=False)
-    assert rep.effects[0] == "drift"
+    assert rep.effects[0] == "drift" and rep.verdict == "explained"
     step = rep.steps[0]
-    assert step["rms_before"] == rep.rms_before
-    assert step["rms_after"] < step["rms_before"]
+    assert step["rms_before"] == rep.rms_before and step["rms_after"] < step["rms_before"]
     ev = step["evidence"]
-    assert set(ev) >= {"signature", "extension", "held_out_gain", "candidates"}
-    assert set(ev["candidates"]) == set(ALL)
-    assert ev["signature"]["r2_time"] > 0.5        # the drift signature is visible in the residual
-    # the final model is a protocol model that reproduces the reported held-out RMS
-    assert isinstance(rep.model, Parallel)
-    pred = rep.model.simulate(d.v)
+    assert ev["signature"]["present"] and ev["signature"]["statistic"] > ev["signature"]["threshold"]
+    assert isinstance(rep.model, PartsModel) and "drift" in rep.model.effects
     k = int(round(d.t.size * 0.7))
+    pred = rep.model.simulate(d.v)
     rms = np.sqrt(np.mean((d.y[k:] - pred[k:]) ** 2))
-    assert rms == pytest.approx(rep.rms_after, rel=1e-9)   # the same numbers, another code path
-    assert rep.validation == (pytest.approx(d.t[k]), pytest.approx(d.t[-1]))
-    # the base model too
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)   # the same numbers, recomputed
     base = rep.base_model.simulate(d.v)
     assert np.sqrt(np.mean((d.y[k:] - base[k:]) ** 2)) == pytest.approx(rep.rms_before, rel=1e-9)
     js = json.loads(rep.to_json())
-    assert list(js) == ["effects", "rms_before", "rms_after", "validation", "steps"]
-    assert list(js["steps"][0]) == ["effect", "rms_before", "rms_after", "evidence"]
+    assert js["schema_version"] == 2
+    for key in ("verdict", "noise_floor", "effects", "steps", "untested", "stopped", "remaining",
+                "rms_before_pct", "rms_after_pct"):
+        assert key in js
+    s = js["steps"][0]
+    assert list(s)[:5] == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct"]
+    assert s["rms_after_pct"] == pytest.approx(100 * s["rms_after"] / np.ptp(d.y))
 
 
-def test_chained_effects_are_added_in_order_of_pay():
-    # drift and a strong saturation together: both found, each step shrinking the gap
-    d = hidden_effect_data("saturation", seed=3, dt=DT, mechanism="tanh_envelope")
-    y = d.y + 0.05 * np.ptp(d.y) * d.t / d.t[-1]
-    rep = diagnose(d.t, d.v, y, progress=False)
-    assert set(rep.effects[:2]) == {"saturation", "drift"}
-    gaps = [rep.rms_before] + [s["rms_after"] for s in rep.steps]
-    assert all(b < 0.9 * a for a, b in zip(gaps, gaps[1:]))
-
-
-def test_without_holds_creep_and_drift_are_untested():
-    exp = identification_experiment(dt=DT, holds=False)
-    d = hidden_effect_data("creep", seed=1, dt=DT, experiment=(exp.t, exp.v))
+@pytest.mark.parametrize("effect,mechanism,seed", [("rate_dependence", "lag", 3),
+                                                   ("asymmetry", "branch_gain", 5),
+                                                   ("rate_dependence", "rate_thresholds", 2)])
+def test_model_reproduces_reported_rms_for_every_part_kind(effect, mechanism, seed):
+    d = hidden_effect_data(effect, seed=seed, dt=DT, mechanism=mechanism)
     rep = diagnose(d.t, d.v, d.y, progress=False)
-    assert set(rep.untested) == {"creep", "drift"}
-    assert "untested" in rep.untested["creep"]
-    assert "creep" not in rep.effects and "drift" not in rep.effects
-    assert "untested" in rep.summary()
+    k = int(round(d.t.size * 0.7))
+    rms = np.sqrt(np.mean((d.y[k:] - rep.model.simulate(d.v)[k:]) ** 2))
+    assert rms == pytest.approx(rep.steps[-1]["rms_after"], rel=1e-9)
+
+
+def test_two_hidden_effects_both_named():
+    # asymmetry (branch gain) and an offset drift of 4 % of the span
+    d = hidden_effect_data("asymmetry", seed=4, dt=DT, mechanism="branch_gain")
+    y = d.y + 0.04 * np.ptp(d.y) * (d.t / d.t[-1]) ** 1.5
+    rep = diagnose(d.t, d.v, y, progress=False)
+    assert {"asymmetry", "drift"} <= set(rep.effects), rep.report()
+    assert rep.verdict == "explained"
+    gaps = [rep.rms_before] + [s["rms_after"] for s in rep.steps]
+    assert all(b < a for a, b in zip(gaps, gaps[1:]))
+
+
+def test_out_of_vocabulary_misfit_is_unexplained():
+    # a dead zone on the output (not among the effects) leaves structure: "unexplained", saying where
+    d = hidden_effect_data(None, seed=5, dt=DT)
+    c = np.median(d.clean)
+    w = 0.15 * np.ptp(d.clean)
+    y = d.clean - np.clip(d.clean - c, -w, w) + (d.y - d.clean)
+    rep = diagnose(d.t, d.v, y, progress=False)
+    assert rep.verdict == "unexplained", rep.report()
+    assert rep.remaining and rep.rms_heldout > 1.5 * rep.noise_floor
+
+
+def test_no_time_axis_leaves_timed_effects_untested():
+    d = hidden_effect_data("saturation", seed=1, dt=DT, mechanism="tanh_envelope")
+    rep = diagnose(None, d.v, d.y, progress=False)
+    assert {"rate_dependence", "creep", "drift", "delay"} <= set(rep.untested)
+    assert not set(rep.effects) & {"rate_dependence", "creep", "drift", "delay", "gain_drift"}
+    assert rep.effects[0] == "saturation"
+    assert "time axis" in rep.untested["rate_dependence"]
+
+
+def test_noisy_input_holds_are_found_and_creep_named():
+    exp = identification_experiment(dt=DT)
+    d = hidden_effect_data("creep", seed=6, dt=DT, mechanism="multi_time_constant")
+    rng = np.random.default_rng(0)
+    v_meas = d.v + 5e-4 * np.ptp(d.v) * rng.standard_normal(d.v.size)   # amplifier monitor noise
+    holds = find_holds(v_meas, DT, np.ptp(v_meas))
+    assert len(holds) >= 0.8 * len(find_holds(exp.v, DT, np.ptp(exp.v)))
+    rep = diagnose(d.t, v_meas, d.y, progress=False)
+    assert "creep" not in rep.untested and rep.effects[0] == "creep", rep.report()
+
+
+def test_unipolar_record_without_false_drift():
+    d = hidden_effect_data(None, seed=8, dt=DT)
+    v = 50.0 * (d.v - d.v.min()) / np.ptp(d.v)                 # 0 .. 50 V
+    from hystcomp.models import PI
+
+    r = np.linspace(0, 50, 41)[1:-1]
+    y = PI(r, np.exp(-r / 20) / 20, 0.4).simulate(v)
+    y = y + 0.002 * np.ptp(y) * np.random.default_rng(1).standard_normal(y.size)
+    rep = diagnose(d.t, v, y, progress=False)
+    assert rep.effects == [] and rep.verdict == "explained", rep.report()
+
+
+def test_coarse_sampling_step_and_record_away_from_zero():
+    # dt = 1 s (Nyquist 0.5 Hz: no fixed frequency grid above it) and an input at 1000 +- 1
+    d = hidden_effect_data(None, seed=9, dt=DT)
+    t = np.arange(d.t.size) * 1.0
+    rep = diagnose(t[::4], 1000.0 + d.v[::4], d.y[::4], progress=False)
+    assert rep.verdict in ("explained", "unexplained") and np.isfinite(rep.rms_heldout)
+    assert rep.rms_heldout < 0.5 * np.std(d.y)
+
+
+def test_piezo_record_initial_state_not_asymmetry():
+    from hystcomp.data import load_piezo
+
+    t, v, y = load_piezo()
+    rep = diagnose(t[::5], v[::5], y[::5], progress=False)
+    assert "asymmetry" not in rep.effects[:1]
+    assert rep.effects[:1] == ["initial_state"] or (rep.verdict == "unexplained" and rep.remaining)
+    assert rep.effects[0] == "initial_state"
+    assert rep.rms_after < 0.2 * rep.rms_before
+
+
+def _bh(material):
+    from scipy.io import loadmat
+
+    folder = os.path.join(HERE, "data", "szewczyk_bh")
+    H = loadmat(os.path.join(folder, f"H_{material}.mat"))["HmeasT"]
+    B = loadmat(os.path.join(folder, f"B_{material}.mat"))["BmeasT"]
+    return H.T.ravel(), B.T.ravel()       # the loops one after the other, smallest first
+
+
+@pytest.mark.parametrize("material", ["MnZn_ferrite", "M130_27s"])
+def test_bh_loops_without_time_axis_saturation_no_rate_effect(material):
+    H, B = _bh(material)
+    rep = diagnose(None, H, B, progress=False)
+    assert rep.effects[0] == "saturation", rep.report()
+    assert not set(rep.effects) & {"rate_dependence", "creep", "drift", "delay", "gain_drift"}
+    assert "rate_dependence" in rep.untested
 
 
 def test_evidence_signatures_point_at_the_effect():
     sat = evidence(*hidden_effect_data("saturation", seed=0, dt=DT, mechanism="cubic")[:3])
-    assert sat["saturation"]["r2_cubic"] > 0.2 and sat["saturation"]["cubic_coefficient"] < 0
+    assert sat["saturation"]["present"] and sat["saturation"]["statistic"] > sat["saturation"]["threshold"]
     cr = evidence(*hidden_effect_data("creep", seed=0, dt=DT, mechanism="multi_time_constant")[:3])
-    assert cr["creep"]["corr_step"] > 0.5
+    assert cr["creep"]["present"]
     rd = evidence(*hidden_effect_data("rate_dependence", seed=0, dt=DT, mechanism="lag")[:3])
-    assert rd["rate_dependence"]["r2_rate"] > 0.2
+    assert rd["rate_dependence"]["present"]
     none = evidence(*hidden_effect_data(None, seed=0, dt=DT)[:3])
-    assert none["saturation"]["r2_cubic"] < 0.2 and none["rate_dependence"]["r2_rate"] < 0.2
+    assert not any(v["present"] for v in none.values()), {k: v["statistic"] for k, v in none.items()}
+
+
+def test_single_frequency_leaves_rate_dependence_untested():
+    t = np.arange(0, 20, 0.01)
+    v = np.sin(2 * np.pi * 0.5 * t)
+    d = hidden_effect_data("rate_dependence", seed=0, dt=0.01, experiment=(t, v), mechanism="lag")
+    rep = diagnose(d.t, d.v, d.y, progress=False)
+    assert "rate_dependence" in rep.untested and "rate_dependence" not in rep.effects
+    assert "one rate" in rep.untested["rate_dependence"]
 
 
 def test_plots(tmp_path):
@@ -109,9 +218,9 @@ def test_plots(tmp_path):
     rep = diagnose(d.t, d.v, d.y, progress=False, max_effects=1)
     figs = rep.plots()
     assert set(figs) == {"signatures", "loops", "gap"}
-    assert len(figs["signatures"].axes) == 6
+    assert len(figs["gap"].axes) == 1 + len(rep.steps)        # one residual panel per step
     paths = rep.save_plots(tmp_path)
-    assert all((tmp_path / p.split("/")[-1]).stat().st_size > 1000 for p in paths)
+    assert all(os.path.getsize(p) > 1000 for p in paths)
 
 
 def test_bad_arguments():
@@ -122,16 +231,19 @@ def test_bad_arguments():
         diagnose(d.t, d.v, d.y, validation=1.5, progress=False)
     with pytest.raises(ValueError, match="not increasing"):
         diagnose(d.t[::-1], d.v, d.y, progress=False)
-    with pytest.raises(ValueError, match="has 10 samples but t has"):
+    with pytest.raises(ValueError, match="has 10 samples but v has"):
         diagnose(d.t, d.v, d.y[:10], progress=False)
     with pytest.raises(ValueError, match="base"):
         diagnose(d.t, d.v, d.y, base="bouc-wen", progress=False)
+    with pytest.raises(ValueError, match="constant"):
+        diagnose(d.t, np.ones(d.t.size), d.y, progress=False)
 
 
-def test_single_frequency_leaves_rate_dependence_untested():
-    t = np.arange(0, 20, 0.01)
-    v = np.sin(2 * np.pi * 0.5 * t)
-    d = hidden_effect_data("rate_dependence", seed=0, dt=0.01, experiment=(t, v), mechanism="lag")
-    rep = diagnose(d.t, d.v, d.y, progress=False)
-    assert "rate_dependence" in rep.untested and "rate_dependence" not in rep.effects
-    assert "one rate" in rep.untested["rate_dependence"]
+def test_write_your_own_effect_example_in_the_docs_runs():
+    text = open(os.path.join(HERE, "..", "docs", "diagnose.md")).read()
+    section = text.split("## Write your own effect", 1)[1]
+    code = re.findall(r"```python\n(.*?)```", section, re.S)[0]
+    scope = {}
+    exec(compile(code, "docs/diagnose.md", "exec"), scope)
+    rep = scope["rep"]
+    assert rep.effects[:1] == ["dead_zone"] and rep.rms_after < 0.5 * rep.rms_before

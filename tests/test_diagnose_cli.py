@@ -41,12 +41,17 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs")], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert list(js) == ["effects", "rms_before", "rms_after", "validation", "steps"]
-    assert js["effects"][0] == "drift"
+    assert js["schema_version"] == 2
+    assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
+    assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]
-    assert len(js["validation"]) == 2 and js["validation"][0] < js["validation"][1]
+    assert js["rms_after_pct"] == pytest.approx(100 * js["rms_after"] / js["output_span"])
+    assert isinstance(js["untested"], dict) and js["stopped"]
     s = js["steps"][0]
-    assert list(s) == ["effect", "rms_before", "rms_after", "evidence"] and s["effect"] == "drift"
+    assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence"]
+    assert s["effect"] == "drift"
+    sig = s["evidence"]["signature"]
+    assert sig["present"] and sig["statistic"] > sig["threshold"]
     assert sorted(p.name for p in (tmp_path / "figs").glob("*.png")) == [
         "diagnose_gap.png", "diagnose_loops.png", "diagnose_signatures.png"]
     assert "diagnose:" in err          # progress lines go to stderr
@@ -56,9 +61,43 @@ def test_summary_text_and_none(tmp_path, capsys):
     d = hidden_effect_data(None, seed=3, dt=0.0125)
     p = _write(tmp_path / "plain.csv", ["t", "v", "y"], zip(d.t, d.v, d.y))
     status, out, _ = _run([p, "--quiet"], capsys)
-    assert status == 0 and "effects: none" in out
+    assert status == 0 and "verdict: explained; effects: none" in out
     status, out, _ = _run([p, "--quiet", "--json"], capsys)
     assert json.loads(out)["effects"] == [] and json.loads(out)["steps"] == []
+
+
+def test_no_time_column(tmp_path, capsys):
+    d = hidden_effect_data("saturation", seed=3, dt=0.0125, mechanism="tanh_envelope")
+    p = _write(tmp_path / "bh.csv", ["H", "B"], zip(d.v, d.y))
+    status, out, err = _run([p, "--no-time", "--input", "H", "--output", "B", "--json", "--quiet"], capsys)
+    assert status == 0, err
+    js = json.loads(out)
+    assert js["effects"][0] == "saturation"
+    assert {"rate_dependence", "creep", "drift", "delay"} <= set(js["untested"])
+
+
+def test_one_second_sampling_step(tmp_path, capsys):
+    # dt = 1 s: nothing may assume a frequency above Nyquist (once a "bad data file")
+    d = hidden_effect_data("drift", seed=4, dt=0.0125)
+    p = _write(tmp_path / "slow.csv", ["t", "v", "y"], zip(np.arange(d.t.size) * 1.0, d.v, d.y))
+    status, out, err = _run([p, "--quiet", "--json"], capsys)
+    assert status == 0, err
+    assert json.loads(out)["verdict"] in ("explained", "unexplained")
+
+
+def test_internal_failure_is_one_line_not_bad_file(tmp_path, capsys, monkeypatch):
+    d = hidden_effect_data(None, seed=3, dt=0.0125)
+    p = _write(tmp_path / "plain.csv", ["t", "v", "y"], zip(d.t, d.v, d.y))
+    from hystcomp.diagnose import search
+
+    def broken(*args, **kw):
+        raise np.linalg.LinAlgError("SVD did not converge")
+    monkeypatch.setattr(search, "run_search", broken)
+    monkeypatch.setattr(dg, "run_search", broken)
+    status, out, err = _run([p, "--quiet"], capsys)
+    assert status == 2 and out == ""
+    lines = err.strip().splitlines()
+    assert len(lines) == 1 and "internal error" in lines[0] and "SVD did not converge" in lines[0]
 
 
 GOOD = [(0.01 * k, np.sin(0.1 * k), np.sin(0.1 * k)) for k in range(200)]
@@ -70,6 +109,9 @@ GOOD = [(0.01 * k, np.sin(0.1 * k), np.sin(0.1 * k)) for k in range(200)]
     ("nan", ["t", "v", "y"], GOOD[:50] + [(0.5, "nan", 1.0)] + GOOD[51:], "finite"),
     ("unsorted time", ["t", "v", "y"], GOOD[:50] + [(0.1, 0.0, 0.0)] + GOOD[51:], "does not increase"),
     ("too few samples", ["t", "v", "y"], GOOD[:20], "at least 100"),
+    ("constant input", ["t", "v", "y"], [(0.01 * k, 1.0, np.sin(0.1 * k)) for k in range(200)], "constant"),
+    ("uneven time", ["t", "v", "y"], [(0.01 * k + (0.004 if k == 100 else 0), np.sin(0.1 * k), 0.0)
+                                     for k in range(200)], "uniformly sampled"),
 ])
 def test_bad_files_exit_2_with_one_line(tmp_path, capsys, case, header, rows, message):
     p = _write(tmp_path / "bad.csv", header, rows)
@@ -78,6 +120,7 @@ def test_bad_files_exit_2_with_one_line(tmp_path, capsys, case, header, rows, me
     assert out == ""
     lines = err.strip().splitlines()
     assert len(lines) == 1 and message in lines[0] and lines[0].startswith("hystcomp diagnose: error:")
+    assert "Traceback" not in err
 
 
 def test_missing_file_exit_2(tmp_path, capsys):
@@ -107,3 +150,6 @@ def test_through_the_hystcomp_command(drift_csv, tmp_path):
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 0, proc.stderr
     assert json.loads(proc.stdout)["effects"][0] == "drift"
+    proc = subprocess.run([sys.executable, "-m", "hystcomp.diagnose", bad, "--json"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1

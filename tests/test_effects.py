@@ -186,8 +186,10 @@ def test_lag_bank_matches_loop():
         np.testing.assert_allclose(x[k], ref, atol=1e-15)
 
 
-def test_diagnose_asymmetric_kernel_matches_modified_play():
-    from hystcomp.diagnose import _asym_play_states
+def test_part_core_kernel_matches_modified_play():
+    # hystcomp.identify's core kernel (the plays of diagnose's parts) against the
+    # library's modified play (eq. 23) with quadratic and with tanh envelopes
+    from hystcomp.identify._part_kernels import core_columns
 
     Vm = 1.0
     rho, cl, cr = 1.3, 0.1, -0.15
@@ -196,10 +198,22 @@ def test_diagnose_asymmetric_kernel_matches_modified_play():
     r_all = np.concatenate([[0.0], R])
     ref, _ = modified_play(V, r_all, gl, gr)
     out = np.empty_like(ref)
-    _asym_play_states(V, r_all, rho, cl / Vm, cr / Vm, np.zeros(r_all.size), out)
+    core_columns(V, r_all, 0.0, 0.0, rho, cl, cr, 0.0, 0.0, np.zeros(0), out)
     np.testing.assert_allclose(out, ref, atol=1e-13)   # Horner vs factored polynomial: rounding
     m = MGPI(R, W, 1.0, envelope_left=gl, envelope_right=gr)
     np.testing.assert_allclose(m.simulate(V), out @ np.concatenate([[1.0], W]), atol=1e-12)
+    # symmetric tanh envelope: gamma(F_r[v]) of the plays (the mGPI's state convention)
+    from hystcomp.envelopes import Tanh
+
+    b = 0.8
+    env = Tanh(1.0 / b, b)
+    core_columns(V, r_all, 0.0, 0.0, 1.0, 0.0, 0.0, b, b, np.zeros(0), out)
+    m = MGPI(R, W, 1.0, envelope=env)
+    np.testing.assert_allclose(m.simulate(V), out @ np.concatenate([[1.0], W]), atol=1e-12)
+    # rate-dependent thresholds: the same plays as RateDependentPI (r_0 = 0 stays the input)
+    rd = RateDependentPI(R, W, 1.0, rate_coefficient=0.02, dt=DT)
+    core_columns(V, r_all, 0.02, 1.0 / DT, 1.0, 0.0, 0.0, 0.0, 0.0, np.zeros(0), out)
+    np.testing.assert_allclose(rd.simulate(V), out @ np.concatenate([[1.0], W]), atol=1e-12)
 
 
 def test_bad_arguments_are_named():

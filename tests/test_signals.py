@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from hystcomp.diagnose import _holds
+from hystcomp.diagnose.record import find_holds as _holds
 from hystcomp.signals import decaying_sine, identification_experiment, multisine, staircase
 
 

@@ -1,7 +1,8 @@
 """Compiled kernels of the model parts of :mod:`hystcomp.identify.parts`.
 
 One recursion serves every hysteresis core the parts build: modified plays
-(eq. 23) with thresholds ``r_i + beta |dx/dt|`` (rate-dependent thresholds,
+(eq. 23) with thresholds ``r_i + beta |dx/dt|`` (for ``r_i > 0``; the operator
+with ``r_0 = 0`` stays the input itself) (rate-dependent thresholds,
 Al Janaideh et al. 2009) and envelopes
 
 ``gl(s) = rho f(s; q_l, b_l)``, ``gr(s) = f(s; q_r, b_r)``,
@@ -54,7 +55,7 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out):
         extra = beta * abs(xk - prev) * inv_dt if beta != 0.0 else 0.0
         prev = xk
         for i in range(N):
-            ri = r[i] + extra
+            ri = r[i] + extra if r[i] > 0.0 else 0.0
             lo = rho * _env(xk - ri, ql, bl)
             hi = _env(xk + ri, qr, br)
             wi = w[i]

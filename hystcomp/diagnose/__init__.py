@@ -1,0 +1,168 @@
+"""Find where a hysteresis model and a measurement disagree, name the missing
+effects by evidence, and say honestly when the data are not explained.
+
+:func:`diagnose` fits a plain PI model (eq. 18; thresholds up to the full
+input span) on the first part of a record and estimates the record's
+**noise floor** from the record itself (:func:`~hystcomp.diagnose.record.noise_floor`:
+the high-frequency part of the residual, and the output's scatter during
+input holds).  Then, step by step, it tries every candidate effect's model
+part (:mod:`hystcomp.identify.parts`), each fitted by variable projection
+with the one constrained least-squares solve of :mod:`hystcomp.identify`:
+
+=================  =============================================================
+effect             parts tried
+=================  =============================================================
+rate_dependence    lag after the hysteresis, resonance after it, lag before it,
+                   rate-dependent thresholds ``r_i + beta |dv/dt|``
+creep              lags of the input on a log grid of time constants
+drift              ``a t + b (1 - exp(-t/tau))``
+gain_drift         gain ``1 + g (t/T - 1/2)`` on the hysteresis
+asymmetry          asymmetric mGPI envelopes (with saturation: two saturating
+                   envelopes)
+saturation         mGPI envelope ``tanh(b v)/b`` (eq. 25)
+output_saturation  clipping of the output
+delay              dead time in fractional samples
+initial_state      a preload history before the record (the plays' start state)
+=================  =============================================================
+
+An effect is named only when **its signature is present** in the current
+residual (:mod:`~hystcomp.diagnose.signatures`: a statistic in noise floors
+against a stated threshold), **its extension pays** on the training part
+(the BIC falls) **and** it lowers the held-out mean square by at least
+``MIN_GAIN`` = 0.25 noise variances.  Among those the one with the largest
+held-out gain is added, and then every nonlinear parameter of the model is
+refitted jointly (warm-started).  The verdict is ``"explained"`` only when
+the final held-out RMS is within 1.5 noise floors and no signature test
+fires on the final residual; otherwise ``"unexplained"``, with what
+remains (in time, against input, against rate, at the record's start).
+
+Without a time axis (``t=None``: a quasi-static point sequence such as a
+B-H loop) rate dependence, creep, drift, gain drift and delay are reported
+untestable, never named.
+"""
+
+import numpy as np
+
+from .cli import add_arguments, load_csv, main, run
+from .record import find_holds
+from .report import SCHEMA_VERSION, Diagnosis
+from .search import EFFECTS, EXPLAINED, MIN_GAIN, run_search
+
+__all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "evidence", "add_arguments", "run", "load_csv"]
+
+#: every effect (the default candidates of :func:`diagnose`)
+ALL = EFFECTS
+
+
+def diagnose(t, v, y, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20, progress=True):
+    """Name the effects a PI model lacks by evidence, add them, and give an
+    honest verdict.
+
+    Parameters
+    ----------
+    t : array_like, shape (n,), or None
+        Time [s] (increasing, uniformly sampled, any step), or None for a
+        record without a time axis (then rate_dependence, creep, drift,
+        gain_drift and delay are untestable and reported in ``untested``).
+    v, y : array_like, shape (n,)
+        Input and measured output.
+    effects : sequence of str
+        Candidates among :data:`EFFECTS` and the effects of parts you
+        registered (:func:`hystcomp.identify.parts.register`); default all
+        of :data:`EFFECTS`.
+    validation : float
+        Fraction of the record held out at its end.
+    max_effects : int
+        At most this many effects are added.
+    base : "pi" or PI
+        The base model: ``"pi"`` (thresholds ``i/N`` of the largest input
+        excursion from the origin, N = `n_thresholds`) or a
+        :class:`~hystcomp.models.PI` whose thresholds are used.
+    n_thresholds : int
+        Number of plays of the default base model.
+    progress : bool
+        Progress lines on stderr.
+
+    Returns
+    -------
+    Diagnosis
+
+    Examples
+    --------
+    >>> from hystcomp.datasets import hidden_effect_data
+    >>> d = hidden_effect_data("drift", seed=3, dt=0.01)
+    >>> rep = diagnose(d.t, d.v, d.y, progress=False)
+    >>> rep.effects[0], rep.verdict, rep.rms_after < 0.5 * rep.rms_before
+    ('drift', 'explained', True)
+    """
+    from .._validation import check_choice
+    from ..models import PI
+
+    from ..identify.parts import PARTS
+
+    effects = list(effects)
+    known = tuple(EFFECTS) + tuple(sorted({c.effect for c in PARTS.values() if c.effect not in EFFECTS}))
+    for e in effects:
+        check_choice(e, "effects", known)
+    if int(max_effects) != max_effects or max_effects < 0:
+        raise ValueError(f"Parameter max_effects is {max_effects} but should be an integer >= 0")
+    thresholds = None
+    if isinstance(base, PI):
+        thresholds = base.thresholds
+    elif not (isinstance(base, str) and base == "pi"):
+        raise ValueError(f"Parameter base is {base!r} but should be 'pi' or a PI model")
+    n_thresholds = int(n_thresholds)
+    if n_thresholds < 2:
+        raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
+    kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress)
+    return Diagnosis(**kw)
+
+
+def evidence(t, v, y, model=None, validation=0.3):
+    """The signature tests of every effect on a model's residual (default:
+    the base PI model fitted on the training part).
+
+    Parameters
+    ----------
+    t : array_like or None
+        Time [s], or None without a time axis.
+    v, y : array_like, shape (n,)
+        Input and measured output.
+    model : model, optional
+        A model whose ``simulate(v)`` predicts y (e.g. :attr:`Diagnosis.model`);
+        default the base PI model.
+    validation : float
+        Fraction held out at the end (not used to fit the default model).
+
+    Returns
+    -------
+    dict
+        effect -> dict with ``signature``, ``statistic`` (in noise floors),
+        ``threshold``, ``present``, ``testable``, ``where``, ``reading``.
+
+    Examples
+    --------
+    >>> from hystcomp.datasets import hidden_effect_data
+    >>> d = hidden_effect_data("saturation", seed=0, dt=0.01, mechanism="cubic")
+    >>> ev = evidence(d.t, d.v, d.y)
+    >>> ev["saturation"]["present"], ev["creep"]["present"]
+    (True, False)
+    """
+    from ..identify.parts import Context
+    from ..identify.search import Structure, VariableProjection
+    from .record import Record, noise_floor
+    from .signatures import evidence as _evidence
+
+    rec = Record(t, v, y, validation)
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration)
+    base = VariableProjection(ctx, rec.y, rec.train).evaluate(Structure(), {}).prediction
+    sigma, _ = noise_floor(rec, rec.y - base)
+    pred = base if model is None else np.asarray(model.simulate(rec.v), dtype=np.float64)
+    return _evidence(rec, rec.y - pred, pred, sigma)
+
+
+# the public objects belong to hystcomp.diagnose (documented API and docstring checks)
+Diagnosis.__module__ = __name__
+for _f in (add_arguments, load_csv, run):
+    _f.__module__ = __name__
+del _f

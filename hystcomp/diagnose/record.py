@@ -1,0 +1,227 @@
+"""A measured record as diagnosis reads it: checks, the input's holds and the
+noise floor."""
+
+import math
+
+import numpy as np
+
+from .._validation import as_scalar, as_signal
+
+
+class Record:
+    """Checked (t, v, y) with the held-out split, the input's holds, rate and
+    the figures of the excitation.
+
+    ``t = None``: no time axis (a quasi-static point sequence, e.g. a B-H
+    loop); the sample index is the only axis.
+    """
+
+    def __init__(self, t, v, y, validation):
+        self.v = as_signal(v, "v", min_length=2)
+        self.y = as_signal(y, "y", min_length=2)
+        n = self.v.size
+        if self.y.size != n:
+            raise ValueError(f"Parameter y has {self.y.size} samples but v has {n}; expected equal lengths")
+        if t is None:
+            self.t = None
+            self.dt = None
+        else:
+            self.t = as_signal(t, "t", min_length=2)
+            if self.t.size != n:
+                raise ValueError(f"Parameter v has {n} samples but t has {self.t.size}; expected equal lengths")
+            d = np.diff(self.t)
+            if np.any(d <= 0):
+                k = int(np.argmax(d <= 0)) + 1
+                raise ValueError(f"Parameter t is not increasing: t[{k}] = {self.t[k]} follows t[{k - 1}] = "
+                                 f"{self.t[k - 1]}")
+            self.dt = float(np.median(d))
+            if np.max(np.abs(d - self.dt)) > 0.05 * self.dt:
+                k = int(np.argmax(np.abs(d - self.dt)))
+                raise ValueError(f"Parameter t is not uniformly sampled: step {d[k]} at sample {k} against the "
+                                 f"median {self.dt}; diagnose needs a uniform sampling time (resample first)")
+        frac = as_scalar(validation, "validation")
+        if not 0.0 < frac < 0.9:
+            raise ValueError(f"Parameter validation is {frac} but should be a fraction in (0, 0.9) "
+                             "(the last part of the record is held out)")
+        self.n = n
+        self.k_val = int(round(n * (1.0 - frac)))
+        if self.k_val < 50 or n - self.k_val < 20:
+            raise ValueError(f"Parameters v and y have {n} samples; at least 50 training and 20 held-out "
+                             f"samples are needed (validation = {frac})")
+        self.train = np.zeros(n, bool)
+        self.train[:self.k_val] = True
+        self.vmin, self.vmax = float(self.v.min()), float(self.v.max())
+        self.span = self.vmax - self.vmin
+        if self.span <= 0:
+            raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
+        self.y_span = float(np.ptp(self.y)) or 1.0
+        # the core's scaling: physical zero as origin when the record contains or
+        # comes near 0 (a unipolar record 0..100 V: plays up to the full span);
+        # else the first sample (a record far from 0 starts with plays at rest)
+        near = self.vmin <= 0.0 <= self.vmax or min(abs(self.vmin), abs(self.vmax)) <= self.span
+        self.origin = 0.0 if near else float(self.v[0])
+        self.scale = float(np.max(np.abs(self.v - self.origin))) or 1.0
+        self.duration = None if self.dt is None else n * self.dt
+        # input noise (the input's high-frequency part) and a smoothed input
+        self.input_noise = _input_noise(self.v)
+        self.vs = _smooth(self.v, 5)
+        if self.dt is not None:
+            self.rate = np.gradient(self.vs, self.dt)
+            self.holds = find_holds(self.v, self.dt, self.span)
+            P = np.abs(np.fft.rfft(self.v - self.v.mean())) ** 2
+            f = np.fft.rfftfreq(n, self.dt)
+            P, f = P[1:], f[1:]
+            self.f_peak = float(f[np.argmax(P)]) if P.size else 0.0
+            band = (f >= self.f_peak / 1.5) & (f <= self.f_peak * 1.5)
+            self.peak_share = float(P[band].sum() / P.sum()) if P.sum() > 0 else 1.0
+        else:
+            self.rate = np.gradient(self.vs)
+            self.holds = []
+            self.f_peak, self.peak_share = 0.0, 1.0
+        self.direction = np.sign(self.rate)
+
+
+def _hf_noise(x):
+    """Robust standard deviation of white noise on a smooth signal: the
+    median absolute second difference (which removes a smooth signal's
+    trend and slope) over 0.6745 sqrt(6)."""
+    if x.size < 5:
+        return 0.0
+    d2 = x[2:] - 2.0 * x[1:-1] + x[:-2]
+    return float(np.median(np.abs(d2 - np.median(d2))) / 0.6745 / math.sqrt(6.0))
+
+
+def _input_noise(x, m=11):
+    """The input's noise: over windows of `m` samples, the scatter about a
+    parabola; the 10th percentile of the windows, over 0.72 (that
+    percentile of the scatter of white noise with m - 3 degrees of freedom).
+    Holds and slow stretches give the noise itself; the fast stretches of a
+    clean input are not mistaken for noise, as they are by a difference
+    estimate."""
+    nb = x.size // m
+    if nb < 3:
+        return _hf_noise(x)
+    X = x[:nb * m].reshape(nb, m)
+    tt = np.linspace(-1.0, 1.0, m)
+    B = np.column_stack([np.ones(m), tt, tt ** 2 - np.mean(tt ** 2)])
+    Q, _ = np.linalg.qr(B)
+    R = X - (X @ Q) @ Q.T
+    sd = np.sqrt(np.sum(R ** 2, axis=1) / (m - 3))
+    return float(np.percentile(sd, 10)) / 0.72
+
+
+def _smooth(x, m):
+    if x.size < 2 * m + 1:
+        return x.copy()
+    k = np.ones(2 * m + 1) / (2 * m + 1)
+    xp = np.pad(x, m, mode="edge")
+    return np.convolve(xp, k, mode="valid")
+
+
+def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
+    """Segments where the input stays put: (start, end, step) of each run of
+    at least ``max(min_samples, min_duration/dt)`` samples in which the
+    input, smoothed over 11 samples, stays within five noise widths (of
+    the smoothed input's difference; the input's own noise, from its
+    quietest stretches, at least 1e-4 of its span) of its value at the run's
+    run so far.  `step` is the input's change into the hold:
+    the hold level minus the mean input over the 2 s before it.
+
+    Parameters
+    ----------
+    v : ndarray
+        Input samples.
+    dt : float
+        Sampling step [s].
+    span : float
+        The input's span.
+    noise : float, optional
+        Input noise standard deviation (default estimated from `v`).
+    min_duration : float
+        Shortest hold [s].
+    min_samples : int
+        Shortest hold [samples].
+
+    Returns
+    -------
+    list of (int, int, float)
+
+    Examples
+    --------
+    >>> rng = np.random.default_rng(0)
+    >>> v = np.concatenate([np.linspace(0, 1, 50), np.ones(100), np.linspace(1, 0, 50), np.zeros(100)])
+    >>> holds = find_holds(v + 1e-3 * rng.standard_normal(300), 0.01, 1.0)
+    >>> [(k // 10, j // 10, bool(s > 0)) for k, j, s in holds]
+    [(5, 14, True), (20, 29, False)]
+    """
+    n = v.size
+    if noise is None:
+        noise = _input_noise(v)
+    vs = _smooth(v, 5)
+    # two 11-sample means differ by noise sqrt(2/11) (std); five such widths,
+    # and never less than 1e-4 of the span (a noise-free input)
+    tol = max(5.0 * noise * math.sqrt(2.0 / 11.0), 1e-4 * span)
+    min_len = max(int(min_samples), int(round(min_duration / dt)))
+    W = max(min_len, int(round(2.0 / dt)))
+    out, k = [], 0
+    while k < n - 1:
+        # the run's reference is the mean of its smoothed samples so far
+        total, j = vs[k], k + 1
+        while j < n and abs(vs[j] - total / (j - k)) <= tol:
+            total += vs[j]
+            j += 1
+        if j - k >= min_len:
+            # a hold is judged by its own level: shrink by the smoothing half-width
+            a, b = min(k + 5, j - 1), max(j - 5, k + 1)
+            if b - a >= min_len // 2:
+                level = float(np.mean(v[a:b]))
+                step = level - float(v[max(0, a - W):a].mean()) if a > 0 else 0.0
+                out.append((a, b, step))
+            k = j
+        else:
+            k += 1
+    return out
+
+
+def noise_floor(rec, residual):
+    """The record's noise floor [output units] and how it was measured.
+
+    Two estimates, from the record itself: the high-frequency part of the
+    base model's residual (median absolute second difference, robust to the
+    residual's smooth structure and to isolated kinks at turning points),
+    and, when the input holds still, the scatter of the output within each
+    hold's second half about a quadratic trend (which takes out creep's
+    slow relaxation); the larger of the two (coloured sensor noise is
+    underestimated by the second difference alone).
+
+    Parameters
+    ----------
+    rec : Record
+        The record.
+    residual : ndarray
+        Measured minus base-model output.
+
+    Returns
+    -------
+    float, dict
+    """
+    hf = _hf_noise(residual)
+    info = {"high_frequency": hf}
+    sd = []
+    for k, j, _ in rec.holds:
+        a = (k + j) // 2
+        if j - a < 8:
+            continue
+        seg = rec.y[a:j]
+        tt = np.linspace(-1.0, 1.0, seg.size)
+        c = np.polyfit(tt, seg, 2)
+        r = seg - np.polyval(c, tt)
+        sd.append(float(np.sqrt(np.sum(r ** 2) / max(seg.size - 3, 1))))
+    if sd:
+        info["holds"] = float(np.median(sd))
+        info["n_holds"] = len(sd)
+    sigma = max(hf, info.get("holds", 0.0))
+    # never zero (a noise-free record): a floor at 1e-6 of the output span
+    sigma = max(sigma, 1e-6 * rec.y_span)
+    info["method"] = ("holds" if info.get("holds", 0.0) > hf else "high_frequency")
+    return sigma, info

@@ -1,0 +1,258 @@
+"""The outcome of a diagnosis: verdict, steps, JSON and figures."""
+
+import json
+import math
+import os
+import textwrap
+
+import numpy as np
+
+SCHEMA_VERSION = 2
+
+
+def _jsonable(x):
+    if isinstance(x, dict):
+        return {str(k): _jsonable(v) for k, v in x.items()}
+    if isinstance(x, (list, tuple)):
+        return [_jsonable(v) for v in x]
+    if isinstance(x, (bool, np.bool_)):
+        return bool(x)
+    if isinstance(x, (np.floating, float)):
+        return float(x) if math.isfinite(x) else None
+    if isinstance(x, np.integer):
+        return int(x)
+    if isinstance(x, np.ndarray):
+        return _jsonable(x.tolist())
+    return x
+
+
+class Diagnosis:
+    """The outcome of :func:`hystcomp.diagnose.diagnose`.
+
+    Attributes
+    ----------
+    verdict : str
+        ``"explained"`` (held-out RMS within 1.5 noise floors and no
+        signature left in the residual) or ``"unexplained"``.
+    noise_floor : float
+        Noise floor estimated from the record [output units] (how:
+        ``noise_info``).
+    effects : list of str
+        The effects added, in order.
+    steps : list of dict
+        One per added effect: ``effect``, ``rms_before``, ``rms_after``,
+        ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
+        output span), ``evidence`` (the signature test, the extension and its
+        parameters, gain and BIC change, every candidate's held-out RMS).
+    untested : dict
+        Effects the data cannot show, with the reason.
+    stopped : str
+        Why the search ended.
+    remaining : dict
+        What structure remains when unexplained (key -> where and how much).
+    model : PartsModel
+        The final model, built from the same parts as the fit;
+        ``model.simulate(v)`` reproduces :attr:`rms_heldout`.
+    rms_heldout : float
+        Held-out RMS of :attr:`model` (= :attr:`rms_after`).
+    rms_before : float
+        Held-out RMS of the base PI model (:attr:`base_model`).
+
+    Examples
+    --------
+    >>> from hystcomp.diagnose import diagnose
+    >>> from hystcomp.datasets import hidden_effect_data
+    >>> d = hidden_effect_data("drift", seed=3, dt=0.01)
+    >>> rep = diagnose(d.t, d.v, d.y, effects=["drift"], progress=False)
+    >>> rep.effects, rep.verdict
+    (['drift'], 'explained')
+    """
+
+    def __init__(self, **kw):
+        self.__dict__.update(kw)
+
+    def _pct(self, x):
+        return 100.0 * x / self.output_span
+
+    def to_dict(self):
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 2).
+
+        Returns
+        -------
+        dict
+        """
+        steps = [{"effect": s["effect"], "rms_before": s["rms_before"], "rms_after": s["rms_after"],
+                  "rms_before_pct": self._pct(s["rms_before"]), "rms_after_pct": self._pct(s["rms_after"]),
+                  "evidence": s["evidence"]} for s in self.steps]
+        return _jsonable({
+            "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
+            "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
+            "effects": list(self.effects), "rms_before": self.rms_before, "rms_after": self.rms_after,
+            "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
+            "rms_heldout": self.rms_heldout, "output_span": self.output_span,
+            "validation": list(self.validation), "steps": steps, "untested": dict(self.untested),
+            "stopped": self.stopped, "remaining": dict(self.remaining),
+            "model": self.model.describe(),
+            "final_signatures": {k: {kk: v[kk] for kk in ("statistic", "threshold", "present", "testable")}
+                                 for k, v in self.final_evidence.items()}})
+
+    def to_json(self):
+        """:meth:`to_dict` as a JSON string.
+
+        Returns
+        -------
+        str
+        """
+        return json.dumps(self.to_dict())
+
+    def report(self):
+        """A readable report (str).
+
+        Returns
+        -------
+        str
+        """
+        s = self.noise_floor
+        lines = [f"base model: PI with {self.model._ctx.thresholds.size} plays; held-out RMS {self.rms_before:.4g} "
+                 f"({self._pct(self.rms_before):.3g} % of the output span), noise floor {s:.4g} "
+                 f"({self._pct(s):.3g} %, from the {self.noise_info['method'].replace('_', '-')} part)"]
+        for name, why in self.untested.items():
+            lines.append(f"  {name}: {why}")
+        for i, st in enumerate(self.steps, 1):
+            ext = st["evidence"]["extension"]
+            sig = st["evidence"]["signature"]
+            lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
+                         f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
+            lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+        for k, why in self.remaining.items():
+            lines.append(f"  remains: {why}")
+        lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}; held-out RMS "
+                     f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")
+        return "\n".join(lines)
+
+    summary = report
+
+    def __repr__(self):
+        return (f"Diagnosis(verdict={self.verdict!r}, effects={self.effects}, noise_floor={self.noise_floor:.4g}, "
+                f"rms_before={self.rms_before:.4g}, rms_after={self.rms_after:.4g})")
+
+    # -- figures
+    def plots(self):
+        """Figures: ``signatures`` (the base residual in time, against the
+        input and against the rate, the noise floor drawn), ``loops``
+        (held-out loops of the base and final model, every n-th cycle on long
+        records), ``gap`` (the residual before and after each step with the
+        noise floor).
+
+        Returns
+        -------
+        dict of str -> matplotlib.figure.Figure
+        """
+        from ..plotting import new_figure
+
+        rec = self._rec
+        s = self.noise_floor
+        xax = rec.t if rec.t is not None else np.arange(rec.n)
+        xlabel = "time [s]" if rec.t is not None else "sample index"
+        e0 = rec.y - self._base_pred
+        idx = np.linspace(0, rec.n - 1, min(rec.n, 5000)).astype(int)
+        fig, ax = new_figure(2, 2, size=(12, 7.5))
+        ax = ax.ravel()
+        ax[0].plot(xax[idx], e0[idx], ".", ms=1.5, label="residual")
+        for a in (ax[0], ax[1], ax[2]):
+            a.axhspan(-s, s, color="C2", alpha=0.2, label="noise floor +-1 sigma")
+        for k, j, _ in rec.holds:
+            ax[0].axvspan(xax[k], xax[j - 1], color="0.85", zorder=0)
+        ax[0].axvline(xax[rec.k_val], color="k", ls="--", lw=0.8)
+        ax[0].set(xlabel=xlabel + " (grey: holds, dashed: held out from)", ylabel="residual [output units]",
+                  title="in time (drift, creep, initial state)")
+        ax[0].legend(fontsize=7, loc="upper right")
+        up = rec.direction[idx] >= 0
+        ax[1].plot(rec.v[idx][up], e0[idx][up], ".", ms=1.5, label="rising")
+        ax[1].plot(rec.v[idx][~up], e0[idx][~up], ".", ms=1.5, label="falling")
+        ax[1].set(xlabel="input v [input units]", ylabel="residual [output units]",
+                  title="against input (asymmetry, saturation)")
+        ax[1].legend(fontsize=7, loc="upper right")
+        if rec.dt is not None:
+            ax[2].plot(rec.rate[idx], e0[idx], ".", ms=1.5)
+            ax[2].set(xlabel="input rate dv/dt [input units/s]", ylabel="residual [output units]",
+                      title="against rate (rate dependence, delay)")
+        else:
+            ax[2].text(0.5, 0.5, "no time axis: rate untested", ha="center", transform=ax[2].transAxes)
+            ax[2].set(xlabel="-", ylabel="residual [output units]", title="against rate")
+        ax[3].axis("off")
+        txt = "\n".join(f"{k}: {v['statistic']:.2f} (threshold {v['threshold']:.2f})"
+                        + ("  PRESENT" if v["present"] else "") + ("" if v["testable"] else "  untested")
+                        for k, v in self.first_evidence.items())
+        ax[3].text(0, 1, "Signatures of the base residual (in noise floors)\n\n" + txt, va="top", fontsize=8,
+                   family="monospace")
+        fig.suptitle("Residual of the base PI model")
+        out = {"signatures": fig}
+
+        # loops on the held-out part, thinned to at most ~8 cycles on long records
+        fig, ax = new_figure(1, 2, size=(13, 5))
+        val = np.flatnonzero(~rec.train)
+        turns = val[np.flatnonzero(np.diff(np.sign(rec.rate[val])) != 0)]
+        if turns.size > 16:
+            step = int(math.ceil(turns.size / 16))
+            sel = np.concatenate([np.arange(turns[j], turns[j + 1]) for j in range(0, turns.size - 1, step)])
+            note = f" (every {step}th half-cycle)"
+        else:
+            sel, note = val, ""
+        final = self.model.simulate(rec.v)
+        for a, pred, name in ((ax[0], self._base_pred, "base PI"), (ax[1], final, "final model")):
+            a.plot(rec.v[sel], rec.y[sel], ".", color="0.5", ms=1.5, label="measured")
+            a.plot(rec.v[sel], pred[sel], ".", ms=1.5, label=name)
+            rms = float(np.sqrt(np.mean((rec.y - pred)[val] ** 2)))
+            a.set(xlabel="input v [input units]", ylabel="output y [output units]",
+                  title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
+            a.legend(fontsize=8, loc="upper left", markerscale=4)
+        fig.suptitle("Loops on the held-out part: " + " + ".join(["PI"] + list(self.effects)))
+        out["loops"] = fig
+
+        # residual before and after each step, noise floor drawn
+        preds = self._step_preds
+        labels = ["base PI"] + [f"+ {st['effect']}" for st in self.steps]
+        fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
+        ax = np.atleast_1d(ax)
+        ylim = 1.1 * float(np.max(np.abs(rec.y - preds[0]))) or 1.0
+        for a, p, lab in zip(ax, preds, labels):
+            e = rec.y - p
+            rms = float(np.sqrt(np.mean(e[~rec.train] ** 2)))
+            a.plot(xax[idx], e[idx], lw=0.6)
+            a.axhspan(-s, s, color="C2", alpha=0.25)
+            a.axhline(1.5 * s, color="C2", ls=":", lw=0.8)
+            a.axhline(-1.5 * s, color="C2", ls=":", lw=0.8)
+            a.axvline(xax[rec.k_val], color="k", ls="--", lw=0.8)
+            a.set_ylim(-ylim, ylim)
+            a.set_ylabel("residual")
+            a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
+        ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed: held out from)")
+        fig.suptitle(textwrap.fill(f"verdict: {self.verdict}; stopped: {self.stopped}", 110), fontsize=9)
+        out["gap"] = fig
+        return out
+
+    def save_plots(self, folder):
+        """Write the figures of :meth:`plots` as PNG files; returns their paths.
+
+        Parameters
+        ----------
+        folder : str or path-like
+            Directory for ``diagnose_signatures.png``, ``diagnose_loops.png``
+            and ``diagnose_gap.png`` (created if missing).
+
+        Returns
+        -------
+        list of str
+            The paths written.
+        """
+        import matplotlib.pyplot as plt
+
+        os.makedirs(folder, exist_ok=True)
+        paths = []
+        for name, fig in self.plots().items():
+            p = os.path.join(folder, f"diagnose_{name}.png")
+            fig.savefig(p, dpi=90)
+            plt.close(fig)
+            paths.append(p)
+        return paths

@@ -1,0 +1,180 @@
+"""The diagnosis search: which parts a record needs, by evidence."""
+
+import sys
+import time
+
+import numpy as np
+
+from ..identify.parts import PARTS, Context
+from ..identify.search import PartsModel, Structure, VariableProjection
+from .record import Record, noise_floor
+from .signatures import evidence as _evidence
+
+#: the canonical effect names, in the order the candidates are tried
+EFFECTS = ("rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "saturation", "output_saturation",
+           "delay", "initial_state")
+TIMED = ("rate_dependence", "creep", "drift", "gain_drift", "delay")
+#: an added effect must lower the held-out mean square by this fraction of the noise variance
+MIN_GAIN = 0.25
+#: "explained": held-out RMS at most this many noise floors
+EXPLAINED = 1.5
+
+
+def _signature_of(part, ev, rec, e, pred, sigma):
+    """The signature test of `part`'s effect: the canonical test, or the part's own."""
+    if part.effect in ev:
+        return ev[part.effect]
+    out = part.signature(e, pred, rec, sigma)
+    if out is None:
+        return {"signature": "none (the part declares no signature test)", "statistic": 0.0, "threshold": 0.0,
+                "present": False, "testable": False, "where": "-", "reading": "no signature test"}
+    out = dict(out)
+    out["present"] = bool(out["statistic"] > out["threshold"])
+    out.setdefault("testable", True)
+    out.setdefault("where", "-")
+    out.setdefault("reading", ("present: " if out["present"] else "absent: ") + out["signature"])
+    return out
+
+
+def _rms(a):
+    return float(np.sqrt(np.mean(a ** 2))) if a.size else 0.0
+
+
+def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress):
+    """The search behind :func:`hystcomp.diagnose.diagnose`; returns the
+    keyword arguments of a :class:`~hystcomp.diagnose.report.Diagnosis`."""
+    t0 = time.perf_counter()
+    say = (lambda s: print("diagnose: " + s, file=sys.stderr, flush=True)) if progress else (lambda s: None)
+    rec = Record(t, v, y, validation)
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
+    if thresholds is not None:
+        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
+        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
+    held = ~rec.train
+    vp = VariableProjection(ctx, rec.y, rec.train)
+
+    def rms_val(pt):
+        return _rms((rec.y - pt.prediction)[held])
+
+    base_struct = Structure()
+    cur = vp.evaluate(base_struct, {})
+    struct = base_struct
+    base_pt = cur
+    sigma, noise_info = noise_floor(rec, rec.y - cur.prediction)
+    ctx.noise = sigma
+    rms0 = rms_val(cur)
+    say(f"base PI ({ctx.thresholds.size} plays) held-out RMS {rms0:.4g}, noise floor {sigma:.4g} "
+        f"({noise_info['method']})  [{time.perf_counter() - t0:.1f} s]")
+    first_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
+    untested = {}
+    for eff in effects:
+        if eff in TIMED and rec.dt is None:
+            untested[eff] = "untested: the record has no time axis (sample index only)"
+        elif eff in first_ev and not first_ev[eff]["testable"]:
+            untested[eff] = first_ev[eff]["reading"]
+    for k, why in untested.items():
+        say(f"{k}: {why}")
+    candidates = [cls for cls in PARTS.values() if cls.effect in effects and cls.effect not in untested
+                  and not (cls.needs_time and rec.dt is None)]
+    steps, chosen = [], []
+    step_preds = [cur.prediction]
+    stopped = "no candidate effect to try"
+    ev = first_ev
+    while candidates and len(chosen) < max_effects:
+        cur_val = rms_val(cur)
+        trials = {}
+        for cls in candidates:
+            if cls.effect in chosen:
+                continue
+            part = cls()
+            part.prepare(rec.y, ctx)
+            st = struct.extended(part)
+            kinds = set(st.kinds)
+            start = {k: dict(vv) for k, vv in cur.values.items()}
+            start[part.kind] = {p.name: p.initial for p in part.parameters(ctx, kinds)}
+            # parts already in the model may have gained parameters (asymmetry + saturation: skew)
+            for p, q in st.parameters(ctx):
+                start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
+            starts = [{part.kind: s} for s in part.initial_values(ctx, kinds)]
+            k_new = len(part.parameters(ctx, kinds))
+            try:
+                pt = vp.optimise(st, start, free={part.kind}, max_evaluations=12 * k_new, starts=starts)
+            except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
+                say(f"step {len(chosen) + 1}: {part.kind}: failed ({exc})")
+                continue
+            trials[part.kind] = (part, st, pt, rms_val(pt))
+            say(f"step {len(chosen) + 1}: {part.effect:17s} {part.kind:22s} held-out RMS {trials[part.kind][3]:.4g}"
+                f"  [{time.perf_counter() - t0:.1f} s]")
+        if not trials:
+            stopped = "no extension left to try"
+            break
+        # acceptance: the signature is present, the training BIC falls and the
+        # held-out mean square falls by at least MIN_GAIN noise variances
+        judged = []
+        for kind, (part, st, pt, rv) in trials.items():
+            gain = (cur_val ** 2 - rv ** 2) / sigma ** 2
+            dbic = pt.bic - cur.bic
+            sig_ok = _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["present"]
+            judged.append((gain, kind, dbic, sig_ok))
+        judged.sort(reverse=True)
+        ok = [j for j in judged if j[0] >= MIN_GAIN and j[2] < 0 and j[3]]
+        if not ok:
+            g, kind, dbic, sig_ok = judged[0]
+            part = trials[kind][0]
+            why = []
+            if g < MIN_GAIN:
+                why.append(f"lowers the held-out mean square by {g:.2f} noise variances (needs {MIN_GAIN})")
+            if dbic >= 0:
+                why.append(f"raises the BIC by {dbic:.1f}")
+            if not sig_ok:
+                why.append("its signature is absent from the residual")
+            stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
+            say(stopped)
+            break
+        gain, kind, dbic, _ = ok[0]
+        part, st, pt, rv = trials[kind]
+        # joint refit of every nonlinear parameter, warm-started
+        n_par = len(st.parameters(ctx))
+        if n_par > len(part.parameters(ctx, set(st.kinds))):
+            joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
+            if joint.rss < pt.rss:
+                pt = joint
+        rv = rms_val(pt)
+        ext = PartsModel(st, pt.values, pt.theta, ctx, pt.names).describe()
+        step_ev = {"signature": _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma), "extension": [d for d in ext if d["kind"] == part.kind][0],
+                   "held_out_gain_noise_variances": round((cur_val ** 2 - rv ** 2) / sigma ** 2, 3),
+                   "bic_change": round(pt.bic - cur.bic, 1),
+                   "candidates": {k: round(tr[3], 6) for k, tr in trials.items()}}
+        steps.append({"effect": part.effect, "rms_before": cur_val, "rms_after": rv, "evidence": step_ev})
+        chosen.append(part.effect)
+        say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rv:.4g}")
+        struct, cur = st, pt
+        step_preds.append(pt.prediction)
+        ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
+        if rv <= EXPLAINED * sigma and not any(x["present"] for x in ev.values()):
+            stopped = "the residual is at the noise floor with no signature left"
+            break
+    else:
+        if candidates and len(chosen) >= max_effects:
+            stopped = f"max_effects = {max_effects} reached"
+    final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
+    model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names)
+    base_model = PartsModel(base_struct, base_pt.values, base_pt.theta, ctx, base_pt.names)
+    rms_final = _rms((rec.y - model.simulate(rec.v))[held])
+    present = {k: x for k, x in final_ev.items() if x["present"] and k not in untested}
+    remaining = {}
+    if rms_final > EXPLAINED * sigma:
+        remaining["held_out"] = (f"held-out RMS {rms_final:.4g} is {rms_final / sigma:.2f} x the noise floor "
+                                 f"(explained needs <= {EXPLAINED})")
+    for k, x in present.items():
+        remaining[k] = f"{x['where']}: {x['signature']} ({x['statistic']:.2f} > {x['threshold']:.2f})"
+    verdict = "explained" if not remaining else "unexplained"
+    say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
+    return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
+                untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
+                rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
+                validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
+                            else (rec.k_val, rec.n - 1)),
+                first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
+                n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
+                _final_pred=cur.prediction, _step_preds=step_preds)

@@ -1,0 +1,210 @@
+"""Signature tests: where each effect leaves its mark in a model's residual.
+
+Every test returns its statistic in units of the noise floor ``sigma`` and
+the threshold it is compared with.  Most are a *partial RMS*: the residual
+is regressed on nuisance columns (static functions of the input on each
+branch, so that an ordinary misfit of the hysteresis does not count) and
+then on nuisance plus the signature's columns; the statistic is
+``sqrt((RSS_nuisance - RSS_both) / n) / sigma``, the RMS of the structure the
+signature's columns explain beyond the nuisance.  Thresholds are fractions
+of the noise floor (a structure of 0.5 sigma RMS is what a human still
+sees in a residual plot of a few thousand samples).
+"""
+
+import math
+
+import numpy as np
+
+#: partial-RMS threshold (fraction of the noise floor) of the regression signatures
+PARTIAL = 0.5
+#: excess RMS at the record's start (fraction of the noise floor) for initial_state
+START = 1.0
+
+WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "in time (during holds)",
+         "drift": "in time", "gain_drift": "in time", "asymmetry": "against input",
+         "saturation": "against input", "output_saturation": "against output",
+         "initial_state": "at the record's start"}
+
+
+def _rss(e, F):
+    coef, *_ = np.linalg.lstsq(F, e, rcond=None)
+    r = e - F @ coef
+    return float(r @ r)
+
+
+def _partial(e, N, F):
+    """RMS of what the columns F explain of e beyond the columns N."""
+    n = e.size
+    return math.sqrt(max(_rss(e, N) - _rss(e, np.column_stack([N, F])), 0.0) / n)
+
+
+def _static_nuisance(rec, bins=12):
+    """Piecewise-linear functions of the input (hat functions on `bins`
+    knots), separately on rising and falling branches, and a constant."""
+    u = (rec.v - rec.vmin) / rec.span
+    knots = np.linspace(0.0, 1.0, bins)
+    h = knots[1] - knots[0]
+    H = np.maximum(0.0, 1.0 - np.abs(u[:, None] - knots[None, :]) / h)
+    up = (rec.direction >= 0)[:, None]
+    return np.column_stack([H * up, H * ~up])
+
+
+def evidence(rec, e, pred, sigma):
+    """Every effect's signature test on the residual `e` (all samples).
+
+    Parameters
+    ----------
+    rec : Record
+        The record.
+    e : ndarray
+        Measured minus model output.
+    pred : ndarray
+        The model's prediction.
+    sigma : float
+        Noise floor.
+
+    Returns
+    -------
+    dict
+        effect -> {signature, statistic, threshold, present, testable,
+        where, reading}.
+    """
+    ev = {}
+    n = rec.n
+    one = np.ones((n, 1))
+    N = _static_nuisance(rec)
+    timed = rec.dt is not None
+
+    def put(name, signature, stat, thr, testable=True, reading="", **extra):
+        stat = float(stat)
+        present = bool(testable and stat > thr)
+        ev[name] = {"signature": signature, "statistic": round(stat, 4), "threshold": thr,
+                    "present": present, "testable": bool(testable), "where": WHERE[name],
+                    "reading": reading or (("present: " if present else "absent: ") + signature), **extra}
+
+    # -- rate dependence: residual against the input rate beyond static branch functions
+    sig = "residual against the input rate |dv/dt| beyond static functions of the input on each branch"
+    if not timed:
+        put("rate_dependence", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+    elif rec.peak_share >= 0.9:
+        put("rate_dependence", sig, 0.0, PARTIAL, False,
+            f"untested: {100 * rec.peak_share:.0f} % of the input's power lies within a factor 1.5 of "
+            f"{rec.f_peak:.3g} Hz; at one rate of excitation rate dependence cannot be told from the loop's "
+            "shape (add sines at other frequencies)")
+    else:
+        r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)
+        F = np.column_stack([r, r * np.abs(r), np.gradient(r)])
+        put("rate_dependence", sig, _partial(e, N, F) / sigma, PARTIAL)
+
+    # -- delay: residual along the derivative of the prediction
+    sig = "residual along the model output's time derivative (a shift in time)"
+    if not timed:
+        put("delay", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+    else:
+        dp = np.gradient(pred)
+        dp = dp / (np.max(np.abs(dp)) or 1.0)
+        lag = _xcorr_lag(e, dp, max_lag=max(3, min(200, n // 50)))
+        put("delay", sig, _partial(e, N, dp[:, None]) / sigma, PARTIAL, lag_samples=lag)
+
+    # -- creep: relaxation during holds in the direction of the step into them
+    sig = "residual change during each hold against the sign of the step into it"
+    moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
+    n_up = sum(1 for _, _, s in moved if s > 0)
+    n_dn = sum(1 for _, _, s in moved if s < 0)
+    if not timed:
+        put("creep", sig, 0.0, 0.5, False, "untested: the record has no time axis")
+    elif n_up < 1 or n_dn < 1 or len(moved) < 3:
+        put("creep", sig, 0.0, 0.5, False,
+            "untested: the input is held still after steps in both directions too rarely "
+            "(need at least 3 holds, after up and down steps)", holds=len(moved))
+    else:
+        rows = []
+        for k, j, s in moved:
+            m = max(2, (j - k) // 5)
+            rows.append((math.copysign(1.0, s), float(e[j - m:j].mean() - e[k:k + m].mean()), (j - k) * rec.dt))
+        R = np.array(rows)
+        X = np.column_stack([R[:, 0], R[:, 2] / R[:, 2].mean()])
+        coef, *_ = np.linalg.lstsq(X, R[:, 1], rcond=None)
+        res = R[:, 1] - X @ coef
+        dof = max(R.shape[0] - 2, 1)
+        se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
+        # the relaxation must exceed half the noise floor and 3 standard errors
+        stat = float(coef[0]) / sigma
+        thr = max(0.5, 3.0 * se / sigma)
+        put("creep", sig, stat, round(thr, 4), holds=len(moved))
+
+    # -- drift / gain drift: slow trend in time beyond static functions of the input
+    sig = "residual's slow trend in time (t, t^2) beyond static functions of the input"
+    sig_g = "residual along t times the model output (a gain changing in time)"
+    if not timed:
+        put("drift", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+        put("gain_drift", sig_g, 0.0, PARTIAL, False, "untested: the record has no time axis")
+    else:
+        tn = np.arange(n) / (n - 1) - 0.5
+        T = np.column_stack([tn, tn ** 2 - 1.0 / 12.0])
+        put("drift", sig, _partial(e, N, T) / sigma, PARTIAL)
+        pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
+        put("gain_drift", sig_g, _partial(e, np.column_stack([N, T]), (tn * pc)[:, None]) / sigma, PARTIAL)
+
+    # -- asymmetry and saturation: even and odd bends against the input
+    c = 0.5 * (rec.vmin + rec.vmax)
+    xc = (rec.v - c) / (0.5 * rec.span)
+    s = rec.direction
+    N1 = np.column_stack([one, xc])
+    put("asymmetry", "residual against even and direction-dependent functions of the input "
+        "(v^2, sign(dv/dt) v^2, |v|)",
+        _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc)])) / sigma, PARTIAL)
+    put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
+        _partial(e, N1, np.column_stack([xc ** 3, xc ** 5])) / sigma, PARTIAL)
+
+    # -- output saturation: the output stays flat at an extreme while the input keeps moving
+    sig = ("input range over which the output sits at its extreme (within 3 noise floors) while the "
+           "input still runs towards it, in fractions of the input span")
+    stat = 0.0
+    for top in (True, False):
+        lim = np.max(rec.y) if top else np.min(rec.y)
+        at = (rec.y >= lim - 3 * sigma) if top else (rec.y <= lim + 3 * sigma)
+        # on the branch that runs into the extreme (rising into the top): a
+        # hysteresis loop reaches its extreme only at the input's extreme, a
+        # clipped output long before (a loop's flat start after a reversal
+        # does not count)
+        at &= (rec.direction > 0) if top else (rec.direction < 0)
+        if at.mean() < 0.005 or at.all():
+            continue
+        lo_v, hi_v = np.percentile(rec.v[at], [10, 90])
+        stat = max(stat, float(hi_v - lo_v) / rec.span)
+    put("output_saturation", sig, stat, 0.1)
+
+    # -- initial state: misfit confined to the start, before the first full excursion
+    sig = ("residual with a level of its own before the input's first full excursion (min and max both "
+           "reached), beyond static functions of the input and a smooth trend")
+    lo = np.flatnonzero(rec.v <= rec.vmin + 0.05 * rec.span)
+    hi = np.flatnonzero(rec.v >= rec.vmax - 0.05 * rec.span)
+    k1 = int(max(lo[0], hi[0])) + 1 if lo.size and hi.size else n
+    if k1 < 10 or k1 > 0.6 * n:
+        put("initial_state", sig, 0.0, START, k1 >= 10, "absent: the input's first full excursion "
+            + ("comes too late to compare" if k1 > 0.6 * n else "is at the start"), first_excursion=k1)
+    else:
+        # a level (and gain) of its own before the first full excursion, beyond
+        # static functions of the input and a smooth trend in time
+        ind = (np.arange(n) < k1).astype(float)
+        tn = np.arange(n) / (n - 1) - 0.5
+        Nt = np.column_stack([N, tn, tn ** 2])
+        put("initial_state", sig, _partial(e, Nt, np.column_stack([ind, ind * xc])) / sigma, START,
+            first_excursion=k1)
+    return ev
+
+
+def _xcorr_lag(e, d, max_lag):
+    """Lag (samples, positive: the residual lags) of the largest |cross-correlation|."""
+    best, lag = -1.0, 0
+    n = e.size
+    for k in range(-max_lag, max_lag + 1):
+        a = e[max(0, k):n + min(0, k)]
+        b = d[max(0, -k):n - max(0, k)]
+        if a.size < 10:
+            continue
+        c = abs(float(a @ b))
+        if c > best:
+            best, lag = c, k
+    return int(lag)
