@@ -1,16 +1,18 @@
-"""Benchmark: ``hystcomp.diagnose`` on 40,000 samples with all five candidates.
+"""Benchmark: ``hystcomp.diagnose`` on 40,000 samples with every candidate effect.
 
 The record is the 40 s identification experiment at dt = 1 ms with a hidden
 effect (default creep, so that the search adds one effect and then tries the
-four others once more before it stops).  Baseline, measured in the same run:
+eight others once more before it stops).  Baseline, measured in the same run:
 one plain PI fit (:func:`hystcomp.identify.fit_weights`, 20 thresholds) on
 the same record -- the diagnosis costs many such fits (the candidates'
-variable projection).  The issue's target: under 60 s.
+variable projection).  The target of issue 10: at most 10 s.  The machine is
+shared: the load (``os.getloadavg``) is printed next to the figures.
 
 Run: ``python benchmarks/bench_diagnose.py [--effect drift] [--repeats 2]``
 """
 
 import argparse
+import os
 import time
 import warnings
 
@@ -20,7 +22,7 @@ from hystcomp.datasets import hidden_effect_data
 from hystcomp.diagnose import ALL, diagnose
 from hystcomp.identify import fit_weights
 
-TARGET = 60.0
+TARGET = 10.0
 
 
 def main(argv=None):
@@ -52,11 +54,13 @@ def main(argv=None):
         times.append(time.perf_counter() - t0)
     best = min(times)
     print(f"\nbaseline: one plain PI fit (fit_weights, 20 thresholds): {t_base:8.2f} s")
-    verdict = "PASS" if best < TARGET else "FAIL"
-    print(f"diagnose, all five candidates:                          {best:8.2f} s  "
-          f"(= {best / t_base:.0f} plain fits; target < {TARGET:.0f} s: {verdict})")
-    print(f"found {rep.effects or 'none'}; held-out RMS {rep.rms_before:.4g} -> {rep.rms_after:.4g} "
-          f"(noise {d.noise:.3g})")
+    verdict = "PASS" if best <= TARGET else "FAIL"
+    print(f"diagnose, all {len(ALL)} candidate effects:                  {best:8.2f} s  "
+          f"(= {best / t_base:.0f} plain fits; target <= {TARGET:.0f} s: {verdict}; "
+          f"{rep.n_evaluations} inner solves)")
+    print(f"verdict {rep.verdict}, found {rep.effects or 'none'}; held-out RMS {rep.rms_before:.4g} -> "
+          f"{rep.rms_after:.4g} (noise floor {rep.noise_floor:.3g}, true noise {d.noise:.3g})")
+    print("load average (1, 5, 15 min): " + ", ".join(f"{x:.2f}" for x in os.getloadavg()))
     return 0
 
 

@@ -114,7 +114,19 @@ def diagnose(t, v, y, effects=ALL, validation=0.3, max_effects=4, base="pi", n_t
     n_thresholds = int(n_thresholds)
     if n_thresholds < 2:
         raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
-    kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress)
+    # the inner solves are many small dense products (tall n x ~25 matrices): a
+    # multi-threaded BLAS only adds contention on a shared machine (10-100x
+    # slower under load, measured), so the search runs with one BLAS thread
+    try:
+        from threadpoolctl import threadpool_limits
+    except ImportError:         # optional: without it the BLAS keeps its threads
+        import contextlib
+
+        limit = contextlib.nullcontext()
+    else:
+        limit = threadpool_limits(limits=1, user_api="blas")
+    with limit:
+        kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress)
     return Diagnosis(**kw)
 
 

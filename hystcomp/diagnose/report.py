@@ -215,7 +215,8 @@ class Diagnosis:
         labels = ["base PI"] + [f"+ {st['effect']}" for st in self.steps]
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
-        ylim = 1.1 * float(np.max(np.abs(rec.y - preds[0]))) or 1.0
+        # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)
+        ylim = max(4.0 * s, 1.3 * float(np.percentile(np.abs(rec.y - preds[0]), 99.5))) or 1.0
         for a, p, lab in zip(ax, preds, labels):
             e = rec.y - p
             rms = float(np.sqrt(np.mean(e[~rec.train] ** 2)))

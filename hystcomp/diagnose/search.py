@@ -88,6 +88,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 continue
             part = cls()
             part.prepare(rec.y, ctx)
+            part.attach(PartsModel(struct, cur.values, cur.theta, ctx, cur.names))
             st = struct.extended(part)
             kinds = set(st.kinds)
             start = {k: dict(vv) for k, vv in cur.values.items()}

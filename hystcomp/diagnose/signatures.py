@@ -112,9 +112,9 @@ def evidence(rec, e, pred, sigma):
     n_up = sum(1 for _, _, s in moved if s > 0)
     n_dn = sum(1 for _, _, s in moved if s < 0)
     if not timed:
-        put("creep", sig, 0.0, 0.5, False, "untested: the record has no time axis")
+        put("creep", sig, 0.0, 0.3, False, "untested: the record has no time axis")
     elif n_up < 1 or n_dn < 1 or len(moved) < 3:
-        put("creep", sig, 0.0, 0.5, False,
+        put("creep", sig, 0.0, 0.3, False,
             "untested: the input is held still after steps in both directions too rarely "
             "(need at least 3 holds, after up and down steps)", holds=len(moved))
     else:
@@ -128,9 +128,9 @@ def evidence(rec, e, pred, sigma):
         res = R[:, 1] - X @ coef
         dof = max(R.shape[0] - 2, 1)
         se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
-        # the relaxation must exceed half the noise floor and 3 standard errors
+        # the relaxation must exceed 0.3 noise floors and 2.5 standard errors
         stat = float(coef[0]) / sigma
-        thr = max(0.5, 3.0 * se / sigma)
+        thr = max(0.3, 2.5 * se / sigma)
         put("creep", sig, stat, round(thr, 4), holds=len(moved))
 
     # -- drift / gain drift: slow trend in time beyond static functions of the input

@@ -46,7 +46,7 @@ from ._part_kernels import core_columns, fractional_delay
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep",
-           "Drift", "OutputClip", "register", "PARTS"]
+           "Drift", "OutputQuadratic", "OutputCubic", "OutputClip", "register", "PARTS"]
 
 Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log"])
 Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds and
@@ -154,6 +154,20 @@ class Part:
     def prepare(self, y, ctx):
         """Called once with the measured output before fitting (default:
         nothing; :class:`OutputClip` reads the output's extremes)."""
+
+    def attach(self, model):
+        """Called with the current model (a
+        :class:`~hystcomp.identify.search.PartsModel`) before this part is
+        tried on top of it (default: nothing; parts driven by the model's
+        output keep it, frozen, as their driver)."""
+
+    def _driver_output(self, ctx):
+        """The frozen driver's output for the context's input (cached)."""
+        key = (id(ctx.v), ctx.n)
+        if getattr(self, "_cache_key", None) != key:
+            self._cache_key = key
+            self._cache = self.driver.simulate(ctx.v)
+        return self._cache
 
     def signature(self, residual, prediction, record, noise_floor):
         """The signature test of a new effect on a residual: a dict with
@@ -590,7 +604,7 @@ class OutputResonance(Part):
 
     def initial_values(self, ctx, kinds):
         lo, hi = self._band(ctx)
-        return [{"frequency": f, "damping": z} for f in np.geomspace(lo, hi, 8) for z in (0.05, 0.3)]
+        return [{"frequency": f, "damping": z} for f in np.geomspace(lo, hi, 16) for z in (0.05, 0.15, 0.4)]
 
     def filter(self, columns, values, ctx):
         return _steady_filter(LinearStage.resonance(values["frequency"], values["damping"], ctx.dt), columns)
@@ -630,11 +644,12 @@ class GainDrift(Part):
 # ----------------------------------------------------------------------------
 @register
 class Creep(Part):
-    """Creep: first-order lags of the input on a logarithmic grid of time
-    constants from ``max(20 dt, T/2000)`` to ``T/4`` (Kuhnen's creep operator,
-    :class:`hystcomp.effects.CreepOperator`), coefficients >= 0 (the output
-    keeps moving in the direction of the last input step).  No nonlinear
-    parameter.
+    """Creep: first-order lags on a logarithmic grid of time constants from
+    ``max(20 dt, T/2000)`` to ``T/4`` (Kuhnen's creep operator,
+    :class:`hystcomp.effects.CreepOperator`) of the input and of the current
+    model's output (frozen when the part is tried: creep driven by the
+    hysteresis output), coefficients >= 0 (the output keeps moving in the
+    direction of the last step).  No nonlinear parameter.
 
     Examples
     --------
@@ -649,7 +664,13 @@ class Creep(Part):
     slot = "additive"
     order = 10
     needs_time = True
-    description = "creep operators (lags of the input)"
+    description = "creep operators (lags of the input and of the hysteresis output)"
+
+    def __init__(self):
+        self.driver = None
+
+    def attach(self, model):
+        self.driver = model
 
     def time_constants(self, ctx):
         hi = max(ctx.duration / 4, 10 * ctx.dt)
@@ -660,11 +681,76 @@ class Creep(Part):
     def columns(self, values, ctx):
         tau = self.time_constants(ctx)
         X = lag_bank(ctx.x, tau, ctx.dt, state=np.full(tau.size, ctx.x[0]))[0]
-        k = tau.size
-        return X, np.zeros(k), np.full(k, np.inf), [f"creep_{t:.3g}s" for t in tau]
+        names = [f"creep_input_{t:.3g}s" for t in tau]
+        if self.driver is not None:
+            h = self._driver_output(ctx)
+            # lags minus the driver itself: only the creeping part, no copy of the driver
+            Y = lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0] - h[:, None]
+            X = np.column_stack([X, -Y])
+            names += [f"creep_output_{t:.3g}s" for t in tau]
+        k = X.shape[1]
+        return X, np.zeros(k), np.full(k, np.inf), names
 
     def describe(self, values):
         return {"part": self.description}
+
+
+class _OutputBend(Part):
+    """A power of the current model's output (frozen when the part is tried),
+    added on the output side."""
+
+    slot = "additive"
+    order = 40
+    power = 2
+
+    def __init__(self):
+        self.driver = None
+
+    def attach(self, model):
+        self.driver = model
+        self._center = self._scale = None
+
+    def columns(self, values, ctx):
+        h = self._driver_output(ctx)
+        if self._center is None:        # fixed on the fitted record
+            self._center = 0.5 * (float(h.max()) + float(h.min()))
+            self._scale = 0.5 * float(np.ptp(h)) or 1.0
+        z = (h - self._center) / self._scale
+        return (z ** self.power)[:, None], np.array([-np.inf]), np.array([np.inf]), [self.kind]
+
+
+@register
+class OutputQuadratic(_OutputBend):
+    """Asymmetry on the output side: ``y = H + a H^2`` (H the model's output,
+    scaled to +-1 over the record).
+
+    Examples
+    --------
+    >>> OutputQuadratic().power, OutputQuadratic().effect
+    (2, 'asymmetry')
+    """
+
+    effect = "asymmetry"
+    kind = "output_quadratic"
+    power = 2
+    description = "quadratic output map y = H + a H^2"
+
+
+@register
+class OutputCubic(_OutputBend):
+    """Saturation on the output side: ``y = H + c H^3`` (c < 0: the gain falls
+    at the extremes; H the model's output scaled to +-1 over the record).
+
+    Examples
+    --------
+    >>> OutputCubic().power, OutputCubic().effect
+    (3, 'saturation')
+    """
+
+    effect = "saturation"
+    kind = "output_cubic"
+    power = 3
+    description = "cubic output map y = H + c H^3"
 
 
 @register
