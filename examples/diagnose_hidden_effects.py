@@ -1,12 +1,13 @@
-"""Blind test of hystcomp.diagnose: hide one effect, see whether it is named.
+"""Blind test of the diagnosis on the library's generator
+=======================================================
 
-For each effect (and none) and each seed, :func:`hystcomp.datasets.hidden_effect_data`
+Hide one effect, see whether it is named.  For each effect (and none) and each seed, :func:`hystcomp.datasets.hidden_effect_data`
 draws a random PI actuator, one mechanism of the effect with a random size,
 and sensor noise on the identification experiment; only (t, v, y) go into
 :func:`hystcomp.diagnose.diagnose`.  Prints the confusion matrix (hidden
 effect against the first effect named), the share of runs whose held-out
-RMS shrank by at least half, and draws the matrix and the diagnosis figures
-of one run.
+RMS shrank by at least half and of "explained" verdicts, and draws the
+matrix and the diagnosis figures of one run.
 
     python examples/diagnose_hidden_effects.py --out figs                # seconds
     python examples/diagnose_hidden_effects.py --seeds 40 --dt 0.004     # the full run of docs/diagnose.md
@@ -24,11 +25,12 @@ matplotlib.use("Agg")
 import numpy as np  # noqa: E402
 
 from hystcomp.datasets import EFFECTS, hidden_effect_data  # noqa: E402
+from hystcomp.diagnose import EFFECTS as NAMED  # noqa: E402
 from hystcomp.diagnose import diagnose  # noqa: E402
 from hystcomp.plotting import new_figure  # noqa: E402
 
 ROWS = ("none",) + EFFECTS
-COLS = ("none",) + EFFECTS
+COLS = ("none",) + NAMED
 
 
 def confusion(seeds, dt, first_seed=0, echo=print):
@@ -46,7 +48,7 @@ def confusion(seeds, dt, first_seed=0, echo=print):
             halved[h] += ratio <= 0.5
             runs.append((h, d.mechanism, s, named, ratio, rep.elapsed))
             echo(f"  {h:16s} {str(d.mechanism):20s} seed {s:3d}: named {named:16s} held-out RMS x {ratio:.3f}"
-                 f"  ({rep.elapsed:.1f} s)")
+                 f"  {rep.verdict:11s} ({rep.elapsed:.1f} s)")
     return counts, halved, runs
 
 

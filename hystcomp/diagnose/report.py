@@ -166,13 +166,13 @@ class Diagnosis:
         ax[0].axvline(xax[rec.k_val], color="k", ls="--", lw=0.8)
         ax[0].set(xlabel=xlabel + " (grey: holds, dashed: held out from)", ylabel="residual [output units]",
                   title="in time (drift, creep, initial state)")
-        ax[0].legend(fontsize=7, loc="upper right")
+        ax[0].legend(fontsize=7, loc="best", framealpha=0.6)
         up = rec.direction[idx] >= 0
         ax[1].plot(rec.v[idx][up], e0[idx][up], ".", ms=1.5, label="rising")
         ax[1].plot(rec.v[idx][~up], e0[idx][~up], ".", ms=1.5, label="falling")
         ax[1].set(xlabel="input v [input units]", ylabel="residual [output units]",
                   title="against input (asymmetry, saturation)")
-        ax[1].legend(fontsize=7, loc="upper right")
+        ax[1].legend(fontsize=7, loc="best", framealpha=0.6)
         if rec.dt is not None:
             ax[2].plot(rec.rate[idx], e0[idx], ".", ms=1.5)
             ax[2].set(xlabel="input rate dv/dt [input units/s]", ylabel="residual [output units]",
