@@ -247,3 +247,24 @@ def test_write_your_own_effect_example_in_the_docs_runs():
     exec(compile(code, "docs/diagnose.md", "exec"), scope)
     rep = scope["rep"]
     assert rep.effects[:1] == ["dead_zone"] and rep.rms_after < 0.5 * rep.rms_before
+
+
+def test_output_falling_with_input_and_constant_output():
+    # a sensor wired the other way round: the same record with -y is explained the same way
+    d = hidden_effect_data(None, seed=11, dt=DT)
+    rep = diagnose(d.t, d.v, -d.y, progress=False)
+    assert rep.effects == [] and rep.verdict == "explained", rep.report()
+    k = int(round(d.t.size * 0.7))
+    rms = np.sqrt(np.mean((-d.y[k:] - rep.model.simulate(d.v)[k:]) ** 2))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+    with pytest.raises(ValueError, match="y is constant"):
+        diagnose(d.t, d.v, np.ones(d.t.size), progress=False)
+
+
+def test_fast_structure_below_a_high_frequency_floor_is_not_explained():
+    # an output unrelated to the input (another record's response): its fast structure fools the
+    # second-difference noise estimate, but the residual is far from white -> "unexplained"
+    a = hidden_effect_data(None, seed=12, dt=DT)
+    b = hidden_effect_data(None, seed=13, dt=DT, amplitude=0.5)
+    rep = diagnose(a.t, a.v, np.roll(b.y, 700), progress=False)
+    assert rep.verdict == "unexplained", rep.report()

@@ -169,7 +169,7 @@ def evidence(t, v, y, model=None, validation=0.3):
     ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration)
     base = VariableProjection(ctx, rec.y, rec.train).evaluate(Structure(), {}).prediction
     sigma, _ = noise_floor(rec, rec.y - base)
-    pred = base if model is None else np.asarray(model.simulate(rec.v), dtype=np.float64)
+    pred = base if model is None else rec.output_sign * np.asarray(model.simulate(rec.v), dtype=np.float64)
     return _evidence(rec, rec.y - pred, pred, sigma)
 
 

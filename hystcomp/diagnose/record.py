@@ -54,7 +54,14 @@ class Record:
         self.span = self.vmax - self.vmin
         if self.span <= 0:
             raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
-        self.y_span = float(np.ptp(self.y)) or 1.0
+        self.y_span = float(np.ptp(self.y))
+        if self.y_span <= 0:
+            raise ValueError(f"Parameter y is constant ({self.y[0]}); there is no response to diagnose")
+        # an output that falls as the input rises: the parts (weights >= 0) model -y
+        slope = float(np.polyfit(self.v, self.y, 1)[0])
+        self.output_sign = -1.0 if slope < 0 else 1.0
+        if self.output_sign < 0:
+            self.y = -self.y
         # the core's scaling: physical zero as origin when the record contains or
         # comes near 0 (a unipolar record 0..100 V: plays up to the full span);
         # else the first sample (a record far from 0 starts with plays at rest)

@@ -199,7 +199,7 @@ class Diagnosis:
             note = f" (every {step}th half-cycle)"
         else:
             sel, note = val, ""
-        final = self.model.simulate(rec.v)
+        final = self._final_pred
         for a, pred, name in ((ax[0], self._base_pred, "base PI"), (ax[1], final, "final model")):
             a.plot(rec.v[sel], rec.y[sel], ".", color="0.5", ms=1.5, label="measured")
             a.plot(rec.v[sel], pred[sel], ".", ms=1.5, label=name)

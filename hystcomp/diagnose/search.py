@@ -18,6 +18,8 @@ TIMED = ("rate_dependence", "creep", "drift", "gain_drift", "delay")
 MIN_GAIN = 0.25
 #: "explained": held-out RMS at most this many noise floors
 EXPLAINED = 1.5
+#: lag-1 autocorrelation above which the final residual is not taken for white noise
+WHITE = 0.6
 
 
 def _signature_of(part, ev, rec, e, pred, sigma):
@@ -146,7 +148,9 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                    "held_out_gain_noise_variances": round((cur_val ** 2 - rv ** 2) / sigma ** 2, 3),
                    "bic_change": round(pt.bic - cur.bic, 1),
                    "candidates": {k: round(tr[3], 6) for k, tr in trials.items()}}
-        steps.append({"effect": part.effect, "rms_before": cur_val, "rms_after": rv, "evidence": step_ev})
+        steps.append({"effect": part.effect, "rms_before": cur_val, "rms_after": rv,
+                      "rms_before_pct": 100.0 * cur_val / rec.y_span, "rms_after_pct": 100.0 * rv / rec.y_span,
+                      "evidence": step_ev})
         chosen.append(part.effect)
         say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rv:.4g}")
         struct, cur = st, pt
@@ -159,9 +163,10 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         if candidates and len(chosen) >= max_effects:
             stopped = f"max_effects = {max_effects} reached"
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
-    model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names)
-    base_model = PartsModel(base_struct, base_pt.values, base_pt.theta, ctx, base_pt.names)
-    rms_final = _rms((rec.y - model.simulate(rec.v))[held])
+    sgn = rec.output_sign
+    model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn)
+    base_model = PartsModel(base_struct, base_pt.values, base_pt.theta, ctx, base_pt.names, sign=sgn)
+    rms_final = _rms((sgn * rec.y - model.simulate(rec.v))[held])
     present = {k: x for k, x in final_ev.items() if x["present"] and k not in untested}
     remaining = {}
     if rms_final > EXPLAINED * sigma:
@@ -169,6 +174,18 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                                  f"(explained needs <= {EXPLAINED})")
     for k, x in present.items():
         remaining[k] = f"{x['where']}: {x['signature']} ({x['statistic']:.2f} > {x['threshold']:.2f})"
+    # a residual correlated from sample to sample makes the high-frequency noise
+    # floor unreliable (coloured noise or fast structure): then not "explained"
+    # unless hold segments confirmed the floor
+    e = rec.y - cur.prediction
+    e = e - e.mean()
+    rho = float(e[1:] @ e[:-1] / (e @ e)) if float(e @ e) > 0 else 0.0
+    noise_info["lag1_autocorrelation"] = round(rho, 4)
+    if noise_info["method"] == "high_frequency" and rho > WHITE:
+        remaining["correlated_residual"] = (
+            f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "
+            f"{WHITE}), so the noise floor from its high-frequency part is not reliable (coloured noise or "
+            "fast structure the model misses; holds in the record would tell)")
     verdict = "explained" if not remaining else "unexplained"
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,

@@ -300,6 +300,9 @@ class PartsModel:
         The fitted record's context (its scaling and clock are kept).
     names : sequence of str
         Column names.
+    sign : float
+        1, or -1 for an output that falls as the input rises (the parts
+        model ``-y``).
 
     Examples
     --------
@@ -313,7 +316,8 @@ class PartsModel:
     True
     """
 
-    def __init__(self, structure, values, theta, ctx, names=()):
+    def __init__(self, structure, values, theta, ctx, names=(), sign=1.0):
+        self.sign = float(sign)
         self.structure = structure
         self.values = {k: dict(v) for k, v in values.items()}
         self.theta = np.asarray(theta, dtype=np.float64)
@@ -350,7 +354,8 @@ class PartsModel:
         A = self.structure.design(self.values, ctx)[0]
         u = A @ self.theta
         out = self.structure.output_part()
-        return u if out is None else out.output(u, self.values.get(out.kind, {}), ctx)
+        y = u if out is None else out.output(u, self.values.get(out.kind, {}), ctx)
+        return y if self.sign > 0 else -y
 
     def describe(self):
         """Readable parts and parameters (list of dicts)."""
