@@ -268,3 +268,35 @@ def test_fast_structure_below_a_high_frequency_floor_is_not_explained():
     b = hidden_effect_data(None, seed=13, dt=DT, amplitude=0.5)
     rep = diagnose(a.t, a.v, np.roll(b.y, 700), progress=False)
     assert rep.verdict == "unexplained", rep.report()
+
+
+def _clean(seed):
+    d = hidden_effect_data(None, seed=seed, dt=DT)
+    return d, d.clean, d.y - d.clean
+
+
+@pytest.mark.parametrize("effect", ["delay", "gain_drift", "output_saturation"])
+def test_new_effects_named(effect):
+    # seed 40 was not used while tuning; one mechanism per effect, built from a clean record
+    d, H, noise = _clean(40)
+    if effect == "delay":                                   # 4 samples of dead time
+        y = np.concatenate([np.full(4, H[0]), H[:-4]]) + noise
+    elif effect == "gain_drift":                            # gain +12 % over the record
+        y = H * (1 + 0.12 * d.t / d.t[-1]) + noise
+    else:                                                   # the sensor clips the top 10 %
+        lo, hi = np.percentile(H, [3, 90])
+        y = np.clip(H, lo, hi) + noise
+    rep = diagnose(d.t, d.v, y, progress=False)
+    assert rep.effects == [effect], rep.report()
+    assert rep.verdict == "explained"
+
+
+def test_creep_on_an_asymmetric_actuator_both_named():
+    # the combined case: creep (two input lags, 6 % of the span) on asymmetric branches
+    from hystcomp.effects import lag_bank
+
+    a = hidden_effect_data("asymmetry", seed=40, dt=DT, mechanism="branch_gain")
+    X = lag_bank(a.v, [0.3, 2.0], DT)[0]
+    y = a.y + 0.06 * np.ptp(a.clean) * (X @ [0.5, 0.5] - a.v)
+    rep = diagnose(a.t, a.v, y, progress=False)
+    assert set(rep.effects[:2]) == {"asymmetry", "creep"}, rep.report()

@@ -107,7 +107,7 @@ def evidence(rec, e, pred, sigma):
         put("delay", sig, _partial(e, N, dp[:, None]) / sigma, PARTIAL, lag_samples=lag)
 
     # -- creep: relaxation during holds in the direction of the step into them
-    sig = "residual change during each hold against the sign of the step into it"
+    sig = "residual change during each hold against the sign of the step into it (either direction)"
     moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
     n_up = sum(1 for _, _, s in moved if s > 0)
     n_dn = sum(1 for _, _, s in moved if s < 0)
@@ -128,8 +128,9 @@ def evidence(rec, e, pred, sigma):
         res = R[:, 1] - X @ coef
         dof = max(R.shape[0] - 2, 1)
         se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
-        # the relaxation must exceed 0.3 noise floors and 2.5 standard errors
-        stat = float(coef[0]) / sigma
+        # the relaxation (in either direction: creep on, or relaxing back) must
+        # exceed 0.3 noise floors and 2.5 standard errors
+        stat = abs(float(coef[0])) / sigma
         thr = max(0.3, 2.5 * se / sigma)
         put("creep", sig, stat, round(thr, 4), holds=len(moved))
 
@@ -159,11 +160,13 @@ def evidence(rec, e, pred, sigma):
 
     # -- output saturation: the output stays flat at an extreme while the input keeps moving
     sig = ("input range over which the output sits at its extreme (within 3 noise floors) while the "
-           "input still runs towards it, in fractions of the input span")
+           "input still runs towards it, in fractions of the input span, where the residual exceeds the "
+           "noise by more than one noise floor")
     stat = 0.0
     for top in (True, False):
-        lim = np.max(rec.y) if top else np.min(rec.y)
-        at = (rec.y >= lim - 3 * sigma) if top else (rec.y <= lim + 3 * sigma)
+        # the extreme without its noise: a high percentile of the output
+        lim = float(np.percentile(rec.y, 99.5 if top else 0.5))
+        at = np.abs(rec.y - lim) <= 3 * sigma
         # on the branch that runs into the extreme (rising into the top): a
         # hysteresis loop reaches its extreme only at the input's extreme, a
         # clipped output long before (a loop's flat start after a reversal
@@ -171,9 +174,18 @@ def evidence(rec, e, pred, sigma):
         at &= (rec.direction > 0) if top else (rec.direction < 0)
         if at.mean() < 0.005 or at.all():
             continue
-        lo_v, hi_v = np.percentile(rec.v[at], [10, 90])
-        stat = max(stat, float(hi_v - lo_v) / rec.span)
-    put("output_saturation", sig, stat, 0.1)
+        # from where the output first sits there to the input's extreme (holds at the
+        # extreme put many samples at one input value: a percentile range would hide it)
+        if top:
+            reach = rec.vmax - float(np.percentile(rec.v[at], 5))
+        else:
+            reach = float(np.percentile(rec.v[at], 95)) - rec.vmin
+        # ... and only where the model misses it: the residual there exceeds the
+        # noise by more than one noise floor (RMS, in quadrature)
+        excess = math.sqrt(max(float(np.mean(e[at] ** 2)) - sigma ** 2, 0.0)) / sigma
+        if excess > 1.0:
+            stat = max(stat, reach / rec.span)
+    put("output_saturation", sig, stat, 0.03)
 
     # -- initial state: misfit confined to the start, before the first full excursion
     sig = ("residual with a level of its own before the input's first full excursion (min and max both "
