@@ -1,0 +1,124 @@
+"""Judge ``hystcomp.diagnose`` on realistic records it was not built from.
+
+The records come from ``tests/realistic`` (mechanisms written from their physics, not from
+hystcomp's model parts). For every case and seed this runs ``diagnose(t, v, y)`` with its
+defaults and prints: the expected effects and verdict, what was named, the held-out RMS
+against the diagnosed noise floor and against the TRUE sensor noise, and whether the answer
+is right (named effect families equal the expected ones, and the verdict matches unless the
+case accepts either). Any "explained" verdict whose held-out RMS exceeds 1.5x the true noise
+is flagged.
+
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|all] [--seeds 3]
+     [--cases NAME ...] [--json OUT] [--jobs 2]
+"""
+
+import argparse
+import json
+import os
+import sys
+import time
+from concurrent.futures import ProcessPoolExecutor
+
+import numpy as np
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "tests"))
+
+from realistic import ALL, HOLDOUT, TUNING, family  # noqa: E402
+
+EXPLAINED_LIMIT = 1.5    # the issue's bound on an "explained" residual, in true noise std
+
+
+def run_one(name, seed):
+    """Diagnose one record; return a dict of what was expected and what came out."""
+    from hystcomp.diagnose import diagnose
+
+    rec = ALL[name](seed)
+    t0 = time.perf_counter()
+    try:
+        res = diagnose(rec.t, rec.v, rec.y, progress=False)
+        error = None
+    except Exception as exc:  # a crash is a wrong answer, reported as such
+        res, error = None, f"{type(exc).__name__}: {exc}"
+    elapsed = time.perf_counter() - t0
+    effects = list(getattr(res, "effects", []) or [])
+    verdict = getattr(res, "verdict", "n/a") if res is not None else "crash"
+    rms = getattr(res, "rms_heldout", None)
+    if rms is None and res is not None:
+        rms = getattr(res, "rms_after", None)
+    floor = getattr(res, "noise_floor", None)
+    right = error is None and rec.judge(effects, verdict)
+    over = (verdict == "explained" and rms is not None
+            and rms > EXPLAINED_LIMIT * rec.noise_std)
+    return {
+        "case": name, "seed": seed, "expected": sorted(rec.expect_effects),
+        "expect_verdict": rec.expect_verdict, "effects": effects, "verdict": verdict,
+        "rms_heldout": None if rms is None else float(rms),
+        "noise_floor": None if floor is None else float(floor),
+        "true_noise": float(rec.noise_std), "right": bool(right), "explained_over_limit": bool(over),
+        "clean": not rec.expect_effects and rec.expect_verdict == "explained",
+        "combined": len(family(rec.expect_effects)) >= 2,
+        "stopped": getattr(res, "stopped", None), "error": error, "seconds": elapsed,
+    }
+
+
+def _fmt(x, d=2):
+    return "   -  " if x is None else f"{x:6.{d}f}"
+
+
+def main(argv=None):
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("--set", choices=["tuning", "holdout", "all"], default="tuning")
+    p.add_argument("--seeds", type=int, default=3)
+    p.add_argument("--cases", nargs="*", default=None)
+    p.add_argument("--json", default=None)
+    p.add_argument("--jobs", type=int, default=1)
+    a = p.parse_args(argv)
+    pool = {"tuning": TUNING, "holdout": HOLDOUT, "all": ALL}[a.set]
+    names = a.cases or list(pool)
+    for n in names:
+        if n not in ALL:
+            p.error(f"unknown case {n!r}; known: {', '.join(ALL)}")
+    jobs = [(n, s) for n in names for s in range(a.seeds)]
+    t0 = time.perf_counter()
+    if a.jobs > 1:
+        with ProcessPoolExecutor(a.jobs) as ex:
+            rows = list(ex.map(run_one, *zip(*jobs)))
+    else:
+        rows = [run_one(n, s) for n, s in jobs]
+    total = time.perf_counter() - t0
+    print(f"{'case':38s} sd {'expected':28s} {'named':32s} {'verdict':11s} "
+          f"{'rms/floor':>9s} {'rms/true':>8s} ok   time")
+    for r in rows:
+        ratio_floor = (r["rms_heldout"] / r["noise_floor"]
+                       if r["rms_heldout"] is not None and r["noise_floor"] else None)
+        ratio_true = r["rms_heldout"] / r["true_noise"] if r["rms_heldout"] is not None else None
+        exp = ",".join(r["expected"]) or "-"
+        exp += "" if r["expect_verdict"] == "explained" else f" ({r['expect_verdict'][:5]})"
+        flag = "yes" if r["right"] else "NO "
+        if r["explained_over_limit"]:
+            flag += "!"
+        print(f"{r['case'][:38]:38s} {r['seed']:2d} {exp[:28]:28s} {','.join(r['effects'])[:32] or '-':32s} "
+              f"{r['verdict'][:11]:11s} {_fmt(ratio_floor):>9s} {_fmt(ratio_true):>8s} {flag:4s} "
+              f"{r['seconds']:5.1f}s" + (f"  {r['error']}" if r["error"] else ""))
+    n = len(rows)
+    right = sum(r["right"] for r in rows)
+    clean = [r for r in rows if r["clean"]]
+    false_alarms = sum(bool(r["effects"]) for r in clean)
+    comb = [r for r in rows if r["combined"]]
+    comb_both = sum(family(r["expected"]) <= family(r["effects"]) for r in comb)
+    over = sum(r["explained_over_limit"] for r in rows)
+    crashes = sum(r["error"] is not None for r in rows)
+    print(f"\nright verdict: {right}/{n} ({100 * right / max(n, 1):.0f} %; target >= 90 %)")
+    print(f"effects named on clean records: {false_alarms}/{len(clean)} runs (target 0)")
+    print(f"combined cases with both effects named: {comb_both}/{len(comb)} (target all)")
+    print(f"'explained' verdicts above {EXPLAINED_LIMIT}x the true noise: {over} (target 0)")
+    print(f"crashes: {crashes}; total {total:.0f} s, {total / max(n, 1):.1f} s per record")
+    if a.json:
+        with open(a.json, "w") as fh:
+            json.dump({"rows": rows, "right": right, "n": n, "seconds": total}, fh, indent=1)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

@@ -1,0 +1,16 @@
+"""Realistic actuator and material records for judging ``hystcomp.diagnose``.
+
+The mechanisms (:mod:`.mechanisms`) and excitations (:mod:`.excitations`) are written from
+their physics, independently of hystcomp's model parts, so that a diagnosis tuned on the
+library's own generator cannot pass by construction.
+
+Two sets of cases: :data:`TUNING` (``cases.py``), on which the diagnosis may be tuned, and
+:data:`HOLDOUT` (``cases_holdout.py``), kept apart: different parameter draws and mechanisms
+and signals not in the tuning set. Each case is ``case(seed) -> Record``.
+"""
+
+from .record import FAMILIES, Record, family  # noqa: F401
+from .cases import TUNING  # noqa: F401
+from .cases_holdout import HOLDOUT  # noqa: F401
+
+ALL = {**TUNING, **HOLDOUT}
