@@ -16,6 +16,8 @@ EFFECTS = ("rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "satu
 TIMED = ("rate_dependence", "creep", "drift", "gain_drift", "delay")
 #: an added effect must lower the held-out mean square by this fraction of the noise variance
 MIN_GAIN = 0.25
+#: ... and remove at least this share of the mean square left above the noise floor
+MIN_SHARE = 0.35
 #: "explained": held-out RMS at most this many noise floors
 EXPLAINED = 1.5
 #: lag-1 autocorrelation above which the final residual is not taken for white noise
@@ -86,7 +88,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         cur_val = rms_val(cur)
         trials = {}
         for cls in candidates:
-            if cls.effect in chosen:
+            if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
                 continue
             part = cls()
             part.prepare(rec.y, ctx)
@@ -120,7 +122,10 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
             sig_ok = _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["present"]
             judged.append((gain, kind, dbic, sig_ok))
         judged.sort(reverse=True)
-        ok = [j for j in judged if j[0] >= MIN_GAIN and j[2] < 0 and j[3]]
+        # (d) it removes at least MIN_SHARE of the structure left above the noise
+        # (an out-of-vocabulary misfit is only nibbled at by every part)
+        excess = max(cur_val ** 2 - sigma ** 2, 1e-300) / sigma ** 2
+        ok = [j for j in judged if j[0] >= MIN_GAIN and j[2] < 0 and j[3] and j[0] >= MIN_SHARE * excess]
         if not ok:
             g, kind, dbic, sig_ok = judged[0]
             part = trials[kind][0]
@@ -131,6 +136,9 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 why.append(f"raises the BIC by {dbic:.1f}")
             if not sig_ok:
                 why.append("its signature is absent from the residual")
+            if g < MIN_SHARE * excess:
+                why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
+                           f"(needs {100 * MIN_SHARE:.0f} %)")
             stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
             say(stopped)
             break

@@ -18,7 +18,7 @@ import numpy as np
 #: partial-RMS threshold (fraction of the noise floor) of the regression signatures
 PARTIAL = 0.5
 #: excess RMS at the record's start (fraction of the noise floor) for initial_state
-START = 1.0
+START = 0.5
 
 WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "in time (during holds)",
          "drift": "in time", "gain_drift": "in time", "asymmetry": "against input",
@@ -152,9 +152,11 @@ def evidence(rec, e, pred, sigma):
     xc = (rec.v - c) / (0.5 * rec.span)
     s = rec.direction
     N1 = np.column_stack([one, xc])
-    put("asymmetry", "residual against even and direction-dependent functions of the input "
-        "(v^2, sign(dv/dt) v^2, |v|)",
-        _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc)])) / sigma, PARTIAL)
+    # a point-symmetric loop (what a PI model draws) leaves residuals odd under
+    # (v, dv/dt) -> (-v, -dv/dt); asymmetry leaves an even part
+    put("asymmetry", "residual against functions of the input even under (v, dv/dt) -> (-v, -dv/dt) "
+        "(v^2, sign(dv/dt) v^2, |v|, sign(dv/dt) v)",
+        _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc])) / sigma, PARTIAL)
     put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
         _partial(e, N1, np.column_stack([xc ** 3, xc ** 5])) / sigma, PARTIAL)
 
@@ -187,23 +189,20 @@ def evidence(rec, e, pred, sigma):
             stat = max(stat, reach / rec.span)
     put("output_saturation", sig, stat, 0.03)
 
-    # -- initial state: misfit confined to the start, before the first full excursion
-    sig = ("residual with a level of its own before the input's first full excursion (min and max both "
-           "reached), beyond static functions of the input and a smooth trend")
+    # -- initial state: a misfit of its own at the record's start (before the input's
+    # first full excursion, and over the first 5, 10 and 20 % of the record: the
+    # memory of a preload is wiped out once the input passes the preload's extremes)
+    sig = ("residual with a level and gain of its own at the record's start (before the first full "
+           "excursion; first 5, 10, 20 %), beyond static functions of the input and a smooth trend")
     lo = np.flatnonzero(rec.v <= rec.vmin + 0.05 * rec.span)
     hi = np.flatnonzero(rec.v >= rec.vmax - 0.05 * rec.span)
     k1 = int(max(lo[0], hi[0])) + 1 if lo.size and hi.size else n
-    if k1 < 10 or k1 > 0.6 * n:
-        put("initial_state", sig, 0.0, START, k1 >= 10, "absent: the input's first full excursion "
-            + ("comes too late to compare" if k1 > 0.6 * n else "is at the start"), first_excursion=k1)
-    else:
-        # a level (and gain) of its own before the first full excursion, beyond
-        # static functions of the input and a smooth trend in time
-        ind = (np.arange(n) < k1).astype(float)
-        tn = np.arange(n) / (n - 1) - 0.5
-        Nt = np.column_stack([N, tn, tn ** 2])
-        put("initial_state", sig, _partial(e, Nt, np.column_stack([ind, ind * xc])) / sigma, START,
-            first_excursion=k1)
+    ends = sorted({int(f * n) for f in (0.05, 0.1, 0.2)} | ({k1} if 10 <= k1 <= 0.6 * n else set()))
+    k_idx = np.arange(n)
+    F = np.column_stack([c for k in ends for c in ((k_idx < k).astype(float), (k_idx < k) * xc)])
+    tn = k_idx / (n - 1) - 0.5
+    Nt = np.column_stack([N, tn, tn ** 2])
+    put("initial_state", sig, _partial(e, Nt, F) / sigma, START, first_excursion=k1)
     return ev
 
 

@@ -28,19 +28,21 @@ def _env(s, q, b):
 
 
 @njit(cache=True)
-def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out):
+def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
 
     x : input (scaled), r : thresholds (scaled, r[0] may be 0), beta : rate
     coefficient [s] (0: rate independent), inv_dt : 1/dt (unused when beta is
     0), preload : inputs applied at rest (rate 0) before the first sample,
-    starting from the virgin state ``w = 0``.
+    starting from the virgin state ``w = 0``.  shift : the plays with
+    ``r_i > 0`` see ``x - shift`` (thresholds ``r_i + shift`` rising and
+    ``r_i - shift`` falling: asymmetric thresholds).
     """
     N = r.size
     w = np.zeros(N)
     for k in range(preload.size):
-        xk = preload[k]
         for i in range(N):
+            xk = preload[k] - shift if r[i] > 0.0 else preload[k]
             lo = rho * _env(xk - r[i], ql, bl)
             hi = _env(xk + r[i], qr, br)
             wi = w[i]
@@ -56,8 +58,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out):
         prev = xk
         for i in range(N):
             ri = r[i] + extra if r[i] > 0.0 else 0.0
-            lo = rho * _env(xk - ri, ql, bl)
-            hi = _env(xk + ri, qr, br)
+            xi = xk - shift if r[i] > 0.0 else xk
+            lo = rho * _env(xi - ri, ql, bl)
+            hi = _env(xi + ri, qr, br)
             wi = w[i]
             if wi > hi:
                 wi = hi

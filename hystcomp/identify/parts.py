@@ -46,7 +46,7 @@ from ._part_kernels import core_columns, fractional_delay
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep",
-           "Drift", "OutputQuadratic", "OutputCubic", "OutputClip", "register", "PARTS"]
+           "Drift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh", "register", "PARTS"]
 
 Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log"])
 Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds and
@@ -200,6 +200,11 @@ class Part:
         """``output`` slot: boolean mask of the samples the linear solve uses."""
         return np.ones(y.size, bool)
 
+    def target(self, y, values, ctx):
+        """``output`` slot: what the linear part must predict, and the weight
+        of each sample (default y itself, unweighted: None)."""
+        return y, None
+
     def output(self, u, values, ctx):
         """``output`` slot: the output for the linear prediction `u`."""
         return u
@@ -273,7 +278,7 @@ class PICore(Part):
             pre = np.append(pre, x[0] if x.size else 0.0)
         core_columns(np.ascontiguousarray(x), ctx.thresholds, beta, inv_dt, float(options.get("rho", 1.0)),
                      float(options.get("ql", 0.0)), float(options.get("qr", 0.0)), float(options.get("bl", 0.0)),
-                     float(options.get("br", 0.0)), pre, out)
+                     float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)))
         return out
 
 
@@ -847,3 +852,75 @@ class OutputClip(Part):
     def describe(self, values):
         lo, hi = self.limits(values)
         return {"part": self.description, "low": float(f"{lo:.6g}"), "high": float(f"{hi:.6g}")}
+
+
+@register
+class OutputTanh(Part):
+    """Smooth saturation on the output side (a magnetisation-like output,
+    an amplifier running into its rails):
+    ``y = c + S tanh((u - c)/S)`` for the linear prediction u.  The linear
+    solve fits ``u`` to ``c + S atanh((y - c)/S)`` on the samples inside
+    98 % of the limits, weighted by ``(1 - ((y - c)/S)^2)^2`` (the slope of
+    the map squared, so that the weighted residual is the output's residual
+    to first order).  Parameters: the half-range ``S`` relative to the
+    output's half-span (> 1) and the centre ``c`` relative to the output's
+    mid-range, in half-spans.
+
+    Examples
+    --------
+    >>> part = OutputTanh()
+    >>> part.set_output_range(-1.0, 1.0)
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> part.output(np.array([0.0, 10.0]), {"limit": 1.5, "centre": 0.0}, ctx).round(4).tolist()
+    [0.0, 1.5]
+    """
+
+    effect = "saturation"
+    kind = "output_tanh"
+    slot = "output"
+    description = "saturating output map y = c + S tanh((u - c)/S)"
+
+    def __init__(self):
+        self.y_min, self.y_max = -1.0, 1.0
+
+    def prepare(self, y, ctx):
+        self.set_output_range(float(np.min(y)), float(np.max(y)))
+
+    def set_output_range(self, y_min, y_max):
+        """The measured output's extremes.
+
+        Parameters
+        ----------
+        y_min, y_max : float
+            Smallest and largest measured output.
+        """
+        self.y_min, self.y_max = float(y_min), float(y_max)
+
+    def _map(self, values):
+        half = 0.5 * (self.y_max - self.y_min) or 1.0
+        c = 0.5 * (self.y_max + self.y_min) + values["centre"] * half
+        S = values["limit"] * half
+        return c, S
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("limit", 1.5, 1.02, 20.0, True), Parameter("centre", 0.0, -0.3, 0.3, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"limit": L, "centre": 0.0} for L in (1.05, 1.15, 1.4, 2.0, 4.0)]
+
+    def fit_rows(self, y, values, ctx):
+        c, S = self._map(values)
+        return np.abs(y - c) < 0.98 * S
+
+    def target(self, y, values, ctx):
+        c, S = self._map(values)
+        r = np.clip((y - c) / S, -0.98, 0.98)
+        return c + S * np.arctanh(r), (1.0 - r ** 2) ** 2
+
+    def output(self, u, values, ctx):
+        c, S = self._map(values)
+        return c + S * np.tanh((u - c) / S)
+
+    def describe(self, values):
+        c, S = self._map(values)
+        return {"part": self.description, "centre": float(f"{c:.6g}"), "limit": float(f"{S:.6g}")}

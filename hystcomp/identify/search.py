@@ -185,9 +185,16 @@ class VariableProjection:
         A, lower, upper, names = structure.design(values, ctx)
         out = structure.output_part()
         rows = self.train
+        weights = None
+        target = y
         if out is not None:
-            rows = rows & out.fit_rows(y, values.get(out.kind, {}), ctx)
-        Ar, yr = A[rows], y[rows]
+            ov = values.get(out.kind, {})
+            rows = rows & out.fit_rows(y, ov, ctx)
+            target, weights = out.target(y, ov, ctx)
+        Ar, yr = A[rows], target[rows]
+        if weights is not None:
+            sw = np.sqrt(weights[rows])
+            Ar, yr = Ar * sw[:, None], yr * sw
         n_r = max(int(rows.sum()), 1)
         G = Ar.T @ Ar
         b = Ar.T @ yr
