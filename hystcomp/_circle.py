@@ -19,14 +19,21 @@ def _response(sys, omega):
     if n == 0:
         return np.full(omega.shape, D)
     A, B, C = (np.asarray(m, dtype=complex) for m in (s.A, s.B, s.C))
-    M = flat[:, None, None] * np.eye(n)[None] - A[None]
+    lam, V = np.linalg.eig(A)
     with np.errstate(all="ignore"):
-        try:
-            sol = np.linalg.solve(M, np.broadcast_to(B, (flat.size, n, 1)))
-            val = (C[None] @ sol)[:, 0, 0] + D
-        except np.linalg.LinAlgError:  # a point on a pole: evaluate one by one
-            val = np.array([complex(np.asarray(sys(z)).reshape(-1)[0]) if np.isfinite(z) else np.nan
-                            for z in flat])
+        if np.linalg.cond(V) < 1e8:   # diagonalisable: sum of first-order terms, O(n) per point
+            left = (C @ V)[0]
+            right = np.linalg.solve(V, B)[:, 0]
+            val = (left * right)[None, :] / (flat[:, None] - lam[None, :])
+            val = val.sum(axis=1) + D
+        else:
+            M = flat[:, None, None] * np.eye(n)[None] - A[None]
+            try:
+                sol = np.linalg.solve(M, np.broadcast_to(B, (flat.size, n, 1)))
+                val = (C[None] @ sol)[:, 0, 0] + D
+            except np.linalg.LinAlgError:  # a point on a pole: evaluate one by one
+                val = np.array([complex(np.asarray(sys(z)).reshape(-1)[0]) if np.isfinite(z) else np.nan
+                                for z in flat])
     return val.reshape(omega.shape)
 
 
@@ -56,18 +63,84 @@ def _frequency_grid(sys, n):
 
 
 def _cl_stable(sys, k):
-    """Is the loop with the linear gain k (u = -k y) stable?"""
-    s = ct.ss(sys)
-    if s.nstates == 0:
-        return bool(1 + k * s.D[0, 0] != 0)
-    den = 1.0 + k * float(s.D[0, 0])
+    """Is the loop with the linear gain k (u = -k y) stable?  `sys` may be
+    the tuple of :func:`_matrices` (faster in loops)."""
+    A, B, C, D, dtime = sys if isinstance(sys, tuple) else _matrices(sys)
+    if A.shape[0] == 0:
+        return bool(1 + k * D != 0)
+    den = 1.0 + k * D
     if den == 0:
         return False
-    A = np.asarray(s.A) - k / den * np.asarray(s.B) @ np.asarray(s.C)
-    ev = np.linalg.eigvals(A)
-    if sys.isdtime(strict=True):
+    ev = np.linalg.eigvals(A - k / den * B @ C)
+    if dtime:
         return bool(np.all(np.abs(ev) < 1 - 1e-12))
     return bool(np.all(ev.real < -1e-12 * max(1.0, np.max(np.abs(ev)))))
+
+
+def _matrices(sys):
+    s = ct.ss(sys)
+    return (np.asarray(s.A, dtype=float), np.asarray(s.B, dtype=float), np.asarray(s.C, dtype=float),
+            float(np.asarray(s.D)[0, 0]), bool(sys.isdtime(strict=True)))
+
+
+def _first_root_above_one(Lw, k1, k2):
+    """Per frequency, the smallest g > 1 where q(g) = 1 + g (k1 + k2) Re L + g^2 k1 k2 |L|^2
+    (= |1 + g k1 L|^2 Re[(1 + g k2 L)/(1 + g k1 L)]) vanishes; inf where none."""
+    b = (k1 + k2) * Lw.real
+    c = k1 * k2 * np.abs(Lw) ** 2
+    out = np.full(Lw.shape, np.inf)
+    with np.errstate(all="ignore"):
+        lin = np.abs(c) < 1e-300
+        g_lin = np.where(lin & (b < 0), -1.0 / b, np.inf)
+        disc = b * b - 4 * c
+        sq = np.sqrt(np.where(disc >= 0, disc, np.nan))
+        r1 = (-b - sq) / (2 * c)
+        r2 = (-b + sq) / (2 * c)
+        for r in (r1, r2):
+            ok = ~lin & np.isfinite(r) & (r > 1)
+            out = np.where(ok, np.minimum(out, r), out)
+        out = np.where(lin, np.where(g_lin > 1, g_lin, np.inf), out)
+    return out
+
+
+def _factor_margin(loop, w, Lw, k1, k2):
+    """Largest g >= 1 with the criterion holding on all of [1, g] (it holds at 1).
+
+    The frequency condition fails first at the smallest root above 1 of the
+    quadratic q(g) (closed form per frequency, refined on a dense grid around
+    the worst one); the loop with the gain g k1 can lose stability only
+    where the Nyquist curve meets -1/(g k1), found from the crossings of
+    the real axis and confirmed by eigenvalues."""
+    roots = _first_root_above_one(Lw, k1, k2)
+    g_f = np.inf
+    j = int(np.argmin(roots))
+    if np.isfinite(roots[j]):
+        x = np.linspace(w[max(j - 1, 0)], w[min(j + 1, w.size - 1)], 2001)
+        g_f = float(min(roots[j], np.min(_first_root_above_one(_response(loop, x), k1, k2))))
+    if k1 == 0:
+        return g_f
+    # candidates where 1 + g k1 L = 0: L real with k1 L < 0
+    im = Lw.imag
+    idx = np.nonzero((np.sign(im[:-1]) != np.sign(im[1:])) | (im[:-1] == 0))[0]
+    cands = []
+    for i in idx:
+        d = im[i] - im[i + 1]
+        s = im[i] / d if d != 0 else 0.0
+        re = Lw[i].real + s * (Lw[i + 1].real - Lw[i].real)
+        if k1 * re < 0:
+            g = -1.0 / (k1 * re)
+            if 1 < g < g_f:
+                cands.append(g)
+    mats = _matrices(loop)
+    for g in sorted(cands):
+        hi = g * 1.001
+        if not _cl_stable(mats, hi * k1):
+            lo = max(1.0, g * 0.999) if _cl_stable(mats, g * 0.999 * k1) else 1.0
+            while hi / lo > 1 + 1e-12:
+                m = np.sqrt(lo * hi)
+                lo, hi = (m, hi) if _cl_stable(mats, m * k1) else (lo, m)
+            return float(min(lo, g_f))
+    return g_f
 
 
 class CircleCriterion:
@@ -199,8 +272,10 @@ def circle_criterion(loop, bounds, n_frequencies=20000):
         i = int(np.nanargmin(re))
         return float(re[i]), float(x[i])
 
+    mats = _matrices(loop)
+
     def upper(k1_):
-        if not _cl_stable(loop, k1_):
+        if not _cl_stable(mats, k1_):
             return np.nan, np.nan
         up, j = _upper(Lw, k1_)
         if not np.isfinite(up):
@@ -224,20 +299,8 @@ def circle_criterion(loop, bounds, n_frequencies=20000):
         msg = (f"not proven: Re[(1 + k2 L)/(1 + k1 L)] < 0 near {wx / (2 * np.pi):.4g} Hz "
                f"(the Nyquist curve enters the critical disc); k2 must stay below {up:.6g}")
     # gain margin of the sector by continuation from g = 1
-    g_max = 1e4
     if stable:
-        g_ok, g = 1.0, 1.0
-        while g < g_max and passes(g * 1.25):
-            g *= 1.25
-            g_ok = g
-        if g >= g_max:
-            gm = np.inf
-        else:
-            a, b = g_ok, g_ok * 1.25
-            for _ in range(45):
-                m = np.sqrt(a * b)
-                a, b = (m, b) if passes(m) else (a, m)
-            gm = a
+        gm = _factor_margin(loop, w, Lw, k1, k2)
     else:
         g = 1.0
         while g > 1e-6 and not passes(g):

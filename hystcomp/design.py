@@ -88,10 +88,9 @@ def resonance(plant):
 
 def _response(sys, omega):
     """Complex frequency response of a SISO LTI at `omega` [rad/s]."""
-    omega = np.atleast_1d(np.asarray(omega, dtype=float))
-    if sys.isdtime(strict=True):
-        return np.asarray(sys(np.exp(1j * omega * sys.dt)), dtype=complex).reshape(omega.shape)
-    return np.asarray(sys(1j * omega), dtype=complex).reshape(omega.shape)
+    from ._circle import _response as response
+
+    return response(sys, np.atleast_1d(np.asarray(omega, dtype=float)))
 
 
 @dataclass(frozen=True)
@@ -322,10 +321,22 @@ def pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None,
                         fdamp if filter is not None else None, dt, fc, pm)
 
     p_wc = complex(_response(pd, wc)[0]) * k
+    f_wc = complex(_response(make(0.0).filter_system(), wc)[0]) if filter is not None else 1.0
+    if dt:
+        z = np.exp(1j * wc * dt)
+
+    def pid_response(g):
+        # iosys.pid: kp + ki dt z/(z - 1) + (kd/tau) (z - 1)/(z - a), a = exp(-dt/tau); or continuous
+        if dt:
+            c = g.kp + g.ki * dt * z / (z - 1)
+            if g.kd:
+                c += g.kd / g.tau_d * (z - 1) / (z - np.exp(-dt / g.tau_d))
+            return c
+        s_ = 1j * wc
+        return g.kp + g.ki / s_ + (g.kd * s_ / (g.tau_d * s_ + 1) if g.kd else 0.0)
 
     def phase_error(phi):
-        c = complex(_response(make(phi).system(), wc)[0])
-        return np.angle(c * p_wc / np.exp(1j * target))
+        return np.angle(pid_response(make(phi)) * f_wc * p_wc / np.exp(1j * target))
 
     lo, hi = -np.radians(89.5) + np.arctan(1.0 / ratio), np.radians(as_scalar(max_lead_deg, "max_lead_deg",
                                                                                  positive=True))
@@ -340,18 +351,23 @@ def pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None,
             "(lower the crossover, the phase margin, or raise max_lead_deg)")
     j = int(sign_change[0])
     phi = brentq(phase_error, grid[j], grid[j + 1], xtol=1e-12)
-    c1 = complex(_response(make(phi).system(), wc)[0])
-    gains = make(phi, 1.0 / abs(c1 * p_wc))
-    m = loop_margins(gains.system(), plant, actuator_gain=k)
-    loop = ct.feedback(ct.series(ct.ss(pd), gains.system()) * k, 1)
-    stable = np.all(np.abs(ct.poles(loop)) < 1) if dt else np.all(np.real(ct.poles(loop)) < 0)
-    if not stable or abs(m.crossover_hz - fc) > 1e-3 * fc:
+    gains = make(phi, 1.0 / abs(pid_response(make(phi)) * f_wc * p_wc))
+    # one gain crossover only, and a stable loop (python-control's stability_margins is slow here)
+    from ._circle import _frequency_grid
+
+    ctrl = gains.system()
+    loop1 = ct.series(ct.ss(pd), ctrl) * k
+    w = _frequency_grid(loop1, 4000)
+    mag = np.abs(_response(loop1, w))
+    other = w[((w > 1.001 * wc) & (mag >= 1.0)) | ((w < 0.999 * wc) & (mag <= 1.0))]
+    cl = ct.feedback(loop1, 1)
+    stable = np.all(np.abs(ct.poles(cl)) < 1) if dt else np.all(np.real(ct.poles(cl)) < 0)
+    if not stable or other.size:
+        where = f"crosses 0 dB again near {other[0] / (2 * np.pi):.4g} Hz" if other.size else "is unstable"
         raise ValueError(
-            f"Parameters crossover_hz = {fc} and phase_margin_deg = {pm} give a loop that "
-            + ("is unstable" if not stable else f"crosses 0 dB again at {m.crossover_hz:.4g} Hz")
-            + f" (gain margin {m.gain_margin:.3g} at {m.phase_crossover_hz:.4g} Hz): the resonance peak "
-            "reaches the crossover; lower the crossover, or filter the resonance (filter='notch', or a "
-            "lower filter_hz)")
+            f"Parameters crossover_hz = {fc} and phase_margin_deg = {pm} give a loop that {where}: the "
+            "resonance peak reaches the crossover; lower the crossover, or filter the resonance "
+            "(filter='notch', or a lower filter_hz)")
     return gains
 
 

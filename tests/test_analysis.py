@@ -126,9 +126,9 @@ def test_two_limit_cycles_small_one_unstable():
     t = np.arange(0, 3.0, DT)
     quiet = simulate_loop(loop, np.where(t < 0.01, 0.5, 0.0), t).outputs[2]
     assert np.ptp(quiet[t > 2.5]) < 1e-6                # a small kick dies out
-    # a kick above the small cycle: the loop settles on the large one
-    kick = np.where(t < 0.0017, 2.0 * small, 0.0) * np.sin(2 * np.pi * f_large * t)
-    loud = simulate_loop(loop, 300 * kick, t).outputs[2]
+    # a kick that drives v well beyond the small cycle: the loop settles on the large one
+    kick = np.where(t < 0.03, 10.0, 0.0) * np.sin(2 * np.pi * f_large * t)
+    loud = simulate_loop(loop, kick, t).outputs[2]
     sim_amp, sim_freq = _oscillation(loud, t, 2.5)
     assert sim_amp == pytest.approx(large, rel=0.10) and sim_freq == pytest.approx(f_large, rel=0.10)
 

@@ -60,7 +60,7 @@ def test_old_demo_loop_margins_read_correctly():
 def test_unreachable_specifications_are_named():
     with pytest.raises(ValueError, match="cannot be met"):
         pid_gains(piezo_stage(), 40.0, 60.0, filter=None)   # a flat plant: at most 90 deg of lag
-    with pytest.raises(ValueError, match="crosses 0 dB again"):
+    with pytest.raises(ValueError, match="crosses 0 dB again near 2[0-9][0-9]"):
         pid_gains(piezo_stage(), 90.0, 60.0, actuator_gain=K_NOM, dt=DT, filter="lowpass", filter_hz=180.0)
     with pytest.raises(ValueError, match="Nyquist"):
         pid_gains(piezo_stage(), 6000.0, 60.0, dt=DT)
