@@ -1,5 +1,5 @@
 """Closed-loop study: five scenarios with a tuned PID
-===================================================
+==================================================
 
 The thesis's mGPI actuator (command v in V, output in um) on a 300 Hz piezo
 stage, 5 Hz reference ``5 sin(2 pi 5 t)/(1 + 0.1 t)`` um: open loop (linear

@@ -1,5 +1,5 @@
 """Predicting a limit cycle with the describing function
-======================================================
+=====================================================
 
 The thesis's mGPI actuator (saturating tanh envelope) drives the 300 Hz piezo
 stage under pure integral control with too much gain (ki = 150 and 100 /s).

@@ -1,5 +1,5 @@
 """Loops tuned to one specification, with and without compensation
-=================================================================
+===============================================================
 
 The thesis's mGPI actuator drives the 300 Hz piezo stage.  One PID family
 (integral, proportional, a low-pass roll-off at twice the crossover) is tuned by

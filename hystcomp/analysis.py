@@ -44,7 +44,7 @@ import control as ct
 
 from ._circle import CircleCriterion, circle_criterion
 from .envelopes import Identity
-from .models import MGPI, PI, StopPI
+from .models import MGPI, StopPI
 
 __all__ = ["describing_function", "DescribingFunction", "limit_cycles", "Sector", "slope_bounds",
            "CircleCriterion", "circle_criterion"]

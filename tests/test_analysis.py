@@ -219,6 +219,12 @@ def test_third_order_lag_enters_the_disc():
     # that [1, k2] is fine for k2 just below its limit, and refuses just above
     assert circle_criterion(L, (1.0, 0.999 * limit)).stable
     assert not circle_criterion(L, (1.0, 1.001 * limit)).stable
+    # a proven sector implies the linear loops at its extremes are stable (Nyquist): check both
+    for k in (1.0, 0.999 * limit):
+        assert np.all(ct.poles(ct.feedback(L * k, 1)).real < 0)
+    # and the sector's gain margin is at most the Nyquist margin of its upper end, 8 / k2
+    res = circle_criterion(L, (1.0, 2.0))
+    assert res.stable and 1.0 < res.gain_margin < 8.0 / 2.0
 
 
 @pytest.mark.parametrize("loop, k", [
