@@ -106,6 +106,12 @@ def test_limit_cycle_predicted_and_confirmed_by_simulation():
     resp = ct.describing_function_response(Lc, DescribingFunction(model), amps, warn_nyquist=False)
     (amp_c, w_c), = resp.intersections
     assert amp_c == pytest.approx(amp, rel=0.01) and w_c / (2 * np.pi) == pytest.approx(freq, rel=0.01)
+    import matplotlib
+
+    matplotlib.use("Agg")
+    cplt = ct.describing_function_plot(Lc, DescribingFunction(model), amps[::3], warn_nyquist=False,
+                                       omega=2 * np.pi * np.linspace(250, 350, 2000))
+    assert len(cplt.lines) == 2                       # the Nyquist curve and -1/N(A) are drawn
     loop = build_loop("feedback", model, piezo_stage(), controller=controller, dt=DT)
     t = np.arange(0, 3.0, DT)
     v = simulate_loop(loop, np.where(t < 0.01, 0.5, 0.0), t).outputs[2]
