@@ -43,6 +43,7 @@ True
 import csv
 import sys
 import time
+from concurrent.futures import as_completed
 
 import numpy as np
 
@@ -704,7 +705,27 @@ class Comparison:
                 writer.writerow({**extra, **{k: row[k] for k in _FIELDS}})
 
 
-def compare(scenarios, reference, t, engine="auto", progress=None):
+def _run_scenario(loop, t, r, engine, span):
+    """One row of :func:`compare` and its response (module level, so that
+    an executor can run it in another process)."""
+    eng = engine
+    if eng == "auto":
+        eng = "compiled" if compiled_support(loop) is None else "python-control"
+    t0 = time.perf_counter()
+    resp = loop.simulate(t, r, engine=eng)
+    secs = time.perf_counter() - t0
+    y = np.asarray(resp.outputs)[0]
+    e = y - r
+    rms = float(np.sqrt(np.mean(e * e)))
+    mx = float(np.max(np.abs(e)))
+    width = loop_width(r, y)
+    row = dict(scenario=loop.name, label=_LABELS.get(loop.scenario, loop.scenario), engine=eng,
+               rms=rms, max=mx, rms_percent=100 * rms / span, max_percent=100 * mx / span,
+               loop_width=width, loop_width_percent=100 * width / span, seconds=secs)
+    return row, resp
+
+
+def compare(scenarios, reference, t, engine="auto", progress=None, executor=None):
     """Run scenarios on one reference and tabulate their tracking.
 
     Parameters
@@ -720,6 +741,11 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
         kernels, python-control's simulation otherwise.
     progress : callable, optional
         Called as ``progress(done, total, name)`` after each scenario.
+    executor : concurrent.futures.Executor, optional
+        Runs the scenarios in parallel (a ``ProcessPoolExecutor``, or
+        ``distributed.Client(...).get_executor()`` for dask); None runs them
+        one after the other.  The loops and results pickle, and the rows are
+        identical either way (in the scenarios' order).
 
     Returns
     -------
@@ -747,25 +773,26 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
     if t.size != r.size:
         raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
     span = float(r.max() - r.min()) or 1.0
-    rows, responses = [], {}
-    for j, loop in enumerate(loops):
-        eng = engine
-        if eng == "auto":
-            eng = "compiled" if compiled_support(loop) is None else "python-control"
-        t0 = time.perf_counter()
-        resp = loop.simulate(t, r, engine=eng)
-        secs = time.perf_counter() - t0
-        y = np.asarray(resp.outputs)[0]
-        e = y - r
-        rms = float(np.sqrt(np.mean(e * e)))
-        mx = float(np.max(np.abs(e)))
-        width = loop_width(r, y)
-        rows.append(dict(scenario=loop.name, label=_LABELS.get(loop.scenario, loop.scenario), engine=eng,
-                         rms=rms, max=mx, rms_percent=100 * rms / span, max_percent=100 * mx / span,
-                         loop_width=width, loop_width_percent=100 * width / span, seconds=secs))
-        responses[loop.name] = resp
-        if progress is not None:
-            progress(j + 1, len(loops), loop.name)
+    if executor is None:
+        results = []
+        for j, loop in enumerate(loops):
+            results.append(_run_scenario(loop, t, r, engine, span))
+            if progress is not None:
+                progress(j + 1, len(loops), loop.name)
+    else:
+        if not hasattr(executor, "submit"):
+            raise TypeError(f"Parameter executor is {executor!r}; expected a concurrent.futures.Executor "
+                            "(an object with submit()) or None")
+        futures = [executor.submit(_run_scenario, loop, t, r, engine, span) for loop in loops]
+        index = {f: j for j, f in enumerate(futures)}
+        done = 0
+        for f in as_completed(futures):
+            done += 1
+            if progress is not None:
+                progress(done, len(loops), loops[index[f]].name)
+        results = [f.result() for f in futures]
+    rows = [row for row, _ in results]
+    responses = {loop.name: resp for loop, (_, resp) in zip(loops, results)}
     return Comparison(rows, responses, r, t)
 
 
