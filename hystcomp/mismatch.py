@@ -101,7 +101,9 @@ def _one_seed(seed, true_model, plant, controller, reference, t, dt, input_range
 class MismatchStudy:
     """Tracking errors of compensators built from identified (mismatched) models.
 
-    Attributes
+    Returned by :func:`mismatch_study`; the constructor only stores its arguments.
+
+    Parameters
     ----------
     rows : list of dict
         One per seed: ``seed``, ``model_rms`` (RMS of fitted minus true model output on
