@@ -1,18 +1,37 @@
-"""``hystcomp demo``: the thesis's actuator in closed loops.
+"""``hystcomp demo``: the thesis's actuator in closed loops tuned to one specification.
 
 An mGPI actuator with the thesis's weights (p0 = 1, p(r) = e^{-0.1 r},
 r_i = 0.25 i, 20 operators; section 5) and a saturating envelope
 ``gamma(v) = 30 tanh(0.05 v)`` drives the default piezo stage
-(:func:`hystcomp.iosys.piezo_stage`: 300 Hz, 5 % damping) sampled at 10 kHz.
-Two references, ``5 sin(2 pi f t)/(1 + 0.1 t)`` for f = 1 Hz (the thesis's
-chapter 5) and a faster f = 5 Hz, run through the five scenarios of
-:mod:`hystcomp.loops` with the exact and the analytic compensator (both with
-``nominal_gain="auto"``) and an integral controller.  The demo prints the
-comparison table, the stability margins of the nominal linear loops and the
-checks of the issue, and writes PNG figures and ``loop_comparison.csv``.
+(:func:`hystcomp.iosys.piezo_stage`: 300 Hz, 5 % damping) sampled at 10 kHz;
+command v in V, actuator output w and stage position y in um.
 
-Wired into the console command by :mod:`hystcomp.cli` through
-:func:`add_arguments` and :func:`run`.
+The story, step by step:
+
+1. The raw actuator's incremental slope over v in [-2, 2] V lies in the
+   sector [1.49, 3.87] um/V (:func:`hystcomp.analysis.slope_bounds`, exact);
+   the compensated actuator ``model o C`` (exact inverse with
+   ``nominal_gain="auto"``) is the gain k_nom = 2.71.
+2. One PID family (integral, proportional, a filtered derivative if the
+   phase needs it, a low-pass roll-off at twice the crossover for the
+   resonance) is tuned by :func:`hystcomp.design.pid_gains` to a phase
+   margin of 60 deg at a gain crossover f_c, on the nominal loop
+   ``C k_nom P``; both loops share it.
+3. For each f_c the circle criterion (:func:`hystcomp.analysis.circle_criterion`)
+   gives the factor by which the loop gain may grow with any slope in the
+   actuator's sector; a loop is "safe" when that guaranteed margin is at
+   least 2 (6 dB).  The compensated loop (sector [k_nom, k_nom]) stays
+   safe to a higher crossover than the raw one (sector [1.49, 3.87]).
+4. References ``5 sin(2 pi f t)/(1 + 0.1 t)`` (f = 1 Hz, the thesis's
+   chapter 5, and 5 Hz) run through open loop, inverse feedforward, the
+   raw loop at its safe crossover, the raw loop at the compensated loop's
+   crossover (not proven safe), PID + compensator and feedforward + PID.
+
+It prints the crossover scan, the margins of each designed loop
+(:func:`control.stability_margins`: gain margin, phase margin, phase and
+gain crossover frequencies), the tracking table and the checks, and writes
+PNG figures and ``loop_comparison.csv``.  Wired into the console command by
+:mod:`hystcomp.cli` through :func:`add_arguments` and :func:`run`.
 """
 
 import argparse
@@ -22,7 +41,7 @@ import time
 
 import numpy as np
 
-__all__ = ["add_arguments", "run", "main", "demo_actuator", "reference", "stability_table"]
+__all__ = ["add_arguments", "run", "main", "demo_actuator", "reference", "stability_table", "crossover_scan"]
 
 
 def demo_actuator():
@@ -66,54 +85,122 @@ def reference(t, freq_hz=1.0, amplitude=5.0):
     return amplitude * np.sin(2 * np.pi * freq_hz * t) / (1.0 + 0.1 * t)
 
 
-def stability_table(kp, ki, kd, dt, gains, plant):
-    """Gain and phase margins of the nominal linear loops ``C(z) k P(z)``.
+def stability_table(kp, ki, kd, dt, gains, plant, controller=None):
+    """Margins of the nominal linear loops ``C(z) k P(z)`` for several actuator gains k.
 
-    For each actuator gain k in `gains` (e.g. the compensated actuator's
-    nominal gain, the raw actuator's smallest and largest slopes) returns
-    ``(k, gain margin, phase margin [deg], phase crossover [Hz])`` (the
-    frequency where the gain margin is measured) from
-    :func:`control.stability_margins`.
+    For each k in `gains` (e.g. the compensated actuator's nominal gain and
+    the raw actuator's smallest and largest slopes) returns
+    ``(k, gain margin, phase margin [deg], phase crossover [Hz], gain
+    crossover [Hz])`` from :func:`control.stability_margins`, which returns
+    ``(gm, pm, sm, wpc, wgc, wms)``: the gain margin is measured at the
+    phase crossover wpc, the phase margin at the gain crossover wgc.
 
     Parameters
     ----------
     kp, ki, kd : float
-        PID gains (see :func:`hystcomp.iosys.pid`).
+        PID gains (see :func:`hystcomp.iosys.pid`); ignored when
+        `controller` is given.
     dt : float
         Sampling time in seconds.
     gains : iterable of float
         Actuator gains k to try.
     plant : control.LTI
         The plant, discretised at `dt` (:func:`hystcomp.iosys.discretize`).
+    controller : control.LTI, optional
+        Any discrete controller (e.g. :func:`hystcomp.design.design_pid`).
 
     Returns
     -------
     list of tuple
-        ``(k, gain margin, phase margin [deg], phase crossover [Hz])`` per
-        gain.
+        ``(k, gain margin, phase margin [deg], phase crossover [Hz], gain
+        crossover [Hz])`` per gain.
 
     Examples
     --------
+    The integral controller of the first version of this demo (ki = 40):
+
     >>> from hystcomp.iosys import discretize, piezo_stage
-    >>> rows = stability_table(0.0, 40.0, 0.0, 1e-4, [1.0, 2.5], discretize(piezo_stage(), 1e-4))
-    >>> [(k, round(gm, 3), round(pm, 1)) for k, gm, pm, _ in rows]   # the margin shrinks as 1/k
-    [(1.0, 4.714, 89.9), (2.5, 1.885, 89.7)]
+    >>> rows = stability_table(0.0, 40.0, 0.0, 1e-4, [2.712], discretize(piezo_stage(), 1e-4))
+    >>> [(round(gm, 3), round(pm, 1), round(fp), round(fc, 1)) for _, gm, pm, fp, fc in rows]
+    [(1.738, 89.7, 300, 17.3)]
     """
-    import warnings
-
-    import control as ct
-
+    from .design import loop_margins
     from .iosys import pid
 
-    c = pid(kp, ki, kd, dt)
-    p = ct.ss(plant)
+    c = pid(kp, ki, kd, dt) if controller is None else controller
     rows = []
     for k in gains:
-        with warnings.catch_warnings():
-            warnings.simplefilter("ignore")  # python-control's note on its 'frd' fallback
-            gm, pm, wcg, wcp = ct.stability_margins(ct.series(p, c) * k)[:4]
-        rows.append((float(k), float(gm), float(pm), float(wcg) / (2 * np.pi)))
+        m = loop_margins(c, plant, actuator_gain=float(k))
+        rows.append((float(k), m.gain_margin, m.phase_margin_deg, m.phase_crossover_hz, m.crossover_hz))
     return rows
+
+
+def crossover_scan(plant, dt, nominal_gain, sectors, crossovers_hz, phase_margin_deg=60.0,
+                   rolloff_factor=2.0, n_frequencies=4000):
+    """Tune one PID per crossover and ask the circle criterion about each sector.
+
+    Parameters
+    ----------
+    plant : control.LTI
+        The stage (continuous).
+    dt : float
+        Sampling time.
+    nominal_gain : float
+        The actuator gain the PID is tuned for (k_nom).
+    sectors : dict
+        name -> (k1, k2): the actuator slope sectors to test (e.g. "raw":
+        :func:`hystcomp.analysis.slope_bounds`, "compensated": (k_nom, k_nom)).
+    crossovers_hz : iterable of float
+        Gain crossover frequencies to try.
+    phase_margin_deg : float, optional
+        Phase margin of every design (default 60).
+    rolloff_factor : float, optional
+        The low-pass roll-off sits at this multiple of the crossover
+        (default 2).
+    n_frequencies : int, optional
+        Frequency grid of :func:`hystcomp.analysis.circle_criterion`
+        (default 4000, plus 401 points around the resonance).
+
+    Returns
+    -------
+    list of dict
+        Per crossover that can be designed: ``crossover_hz``, ``gains``
+        (:class:`hystcomp.design.PIDGains`), ``gain_margin`` (of the
+        linear loop at k_nom) and, per sector name,
+        the guaranteed factor ``g_<name>``
+        (:attr:`hystcomp.analysis.CircleCriterion.gain_margin`).
+
+    Examples
+    --------
+    >>> from hystcomp.iosys import piezo_stage
+    >>> rows = crossover_scan(piezo_stage(), 1e-4, 2.712, {"compensated": (2.712, 2.712)}, [40.0])
+    >>> round(rows[0]["g_compensated"], 2), round(rows[0]["gain_margin"], 2)
+    (5.52, 5.52)
+    """
+    import control as ct
+
+    from .analysis import circle_criterion
+    from .design import pid_gains
+    from .iosys import discretize
+
+    pd = discretize(plant, dt)
+    out = []
+    for fc in crossovers_hz:
+        try:
+            g = pid_gains(plant, fc, phase_margin_deg, actuator_gain=nominal_gain, dt=dt, filter="lowpass",
+                          filter_hz=rolloff_factor * fc)
+        except ValueError:
+            continue  # not reachable with this controller family
+        c = g.system()
+        L = ct.series(pd, c)
+        # the degenerate sector [k_nom, k_nom] gives the linear gain margin (eigenvalue-exact)
+        row = dict(crossover_hz=float(fc), gains=g,
+                   gain_margin=circle_criterion(L, (nominal_gain, nominal_gain),
+                                                n_frequencies=n_frequencies).gain_margin)
+        for name, sec in sectors.items():
+            row[f"g_{name}"] = circle_criterion(L, tuple(sec), n_frequencies=n_frequencies).gain_margin
+        out.append(row)
+    return out
 
 
 def add_arguments(parser):
@@ -123,8 +210,9 @@ def add_arguments(parser):
     ----------
     parser : argparse.ArgumentParser
         The parser (or subparser) to extend: ``--out``, ``--duration``,
-        ``--dt``, ``--freqs``, ``--kp``, ``--ki``, ``--kd``, ``--stage-hz``,
-        ``--damping``, ``--engine`` and ``--no-figures``.
+        ``--dt``, ``--freqs``, ``--phase-margin``, ``--crossovers``,
+        ``--required-margin``, ``--stage-hz``, ``--damping``, ``--engine``
+        and ``--no-figures``.
 
     Examples
     --------
@@ -142,10 +230,13 @@ def add_arguments(parser):
                         help="sampling time of the loops in seconds (default: 1e-4, 10 kHz)")
     parser.add_argument("--freqs", type=float, nargs="+", default=[1.0, 5.0], metavar="HZ",
                         help="frequencies of the references 5 sin(2 pi f t)/(1 + 0.1 t) (default: 1 5)")
-    parser.add_argument("--kp", type=float, default=0.0, help="PID proportional gain (default: 0)")
-    parser.add_argument("--ki", type=float, default=40.0,
-                        help="PID integral gain (default: 40; the loops go unstable near 70, see docs/loops.md)")
-    parser.add_argument("--kd", type=float, default=0.0, help="PID derivative gain (default: 0)")
+    parser.add_argument("--phase-margin", type=float, default=60.0, metavar="DEG",
+                        help="phase margin of every PID design in degrees (default: 60)")
+    parser.add_argument("--crossovers", type=float, nargs="+", default=[20, 30, 40, 50, 60, 70, 80],
+                        metavar="HZ", help="gain crossover frequencies to scan (default: 20 30 ... 80)")
+    parser.add_argument("--required-margin", type=float, default=2.0, metavar="G",
+                        help="gain factor the circle criterion must guarantee over the actuator's slope "
+                             "sector for a loop to count as safe (default: 2, i.e. 6 dB)")
     parser.add_argument("--stage-hz", type=float, default=300.0,
                         help="resonance of the piezo stage in Hz (default: 300)")
     parser.add_argument("--damping", type=float, default=0.05,
@@ -163,12 +254,22 @@ def _progress(stream):
         if stream is None:
             return
         bar = "#" * int(30 * done / total)
-        stream.write(f"\r  [{bar:30s}] {done}/{total} {name:40s} {time.perf_counter() - start:5.1f} s")
+        stream.write(f"\r  [{bar:30s}] {done}/{total} {name:44s} {time.perf_counter() - start:5.1f} s")
         if done == total:
             stream.write("\n")
         stream.flush()
 
     return show
+
+
+_LOOPS = (  # key, scenario, controller, label
+    ("open_loop", "open_loop", None, "open loop (1/k_nom)"),
+    ("feedforward", "feedforward", None, "inverse feedforward"),
+    ("pid_raw_safe", "feedback", "raw", "PID at the raw loop's safe f_c"),
+    ("pid_raw_fast", "feedback", "comp", "PID at the compensated f_c (raw)"),
+    ("pid_compensated", "feedback_compensated", "comp", "PID + compensator"),
+    ("two_dof", "two_dof", "comp", "feedforward + PID + compensator"),
+)
 
 
 def run(args, echo=print, progress_stream=None):
@@ -187,8 +288,10 @@ def run(args, echo=print, progress_stream=None):
     Returns
     -------
     dict
-        ``rows`` (the table, one dict per reference, compensator and
-        scenario), ``checks`` (name -> (passed, text)), ``files`` (written).
+        ``rows`` (the tracking table, one dict per reference and loop),
+        ``scan`` (:func:`crossover_scan`), ``design`` (the chosen
+        crossovers, sectors and margins), ``checks`` (name -> (passed,
+        text)), ``files`` (written).
 
     Examples
     --------
@@ -198,18 +301,23 @@ def run(args, echo=print, progress_stream=None):
     >>> parser = argparse.ArgumentParser()
     >>> add_arguments(parser)
     >>> args = parser.parse_args(["--out", tempfile.mkdtemp(), "--duration", "0.01",
-    ...                           "--freqs", "5", "--no-figures"])
+    ...                           "--freqs", "5", "--crossovers", "50", "80", "--no-figures"])
     >>> res = run(args, echo=lambda line: None, progress_stream=io.StringIO())
-    >>> len(res["rows"]), sorted({row["scenario"] for row in res["rows"]})
-    (8, ['feedback', 'feedback_compensated', 'feedforward', 'open_loop', 'two_dof'])
+    >>> len(res["rows"]), res["design"]["raw_hz"], res["design"]["compensated_hz"]
+    (7, 50.0, 80.0)
     >>> [os.path.basename(p) for p in res["files"]]
     ['loop_comparison.csv']
     """
     if progress_stream is None:
         progress_stream = sys.stderr
+    import csv
+
+    import control as ct
+
     from . import __version__
-    from .iosys import compensator_system, mean_gain, pid, piezo_stage
-    from .loops import build_scenarios, compare
+    from .analysis import slope_bounds
+    from .iosys import compensator_system, piezo_stage
+    from .loops import build_loop, compare
 
     out = args.out
     os.makedirs(out, exist_ok=True)
@@ -217,116 +325,193 @@ def run(args, echo=print, progress_stream=None):
     t = np.arange(int(round(args.duration / dt)) + 1) * dt
     model = demo_actuator()
     stage = piezo_stage(natural_freq_hz=args.stage_hz, damping=args.damping)
-    controller = pid(args.kp, args.ki, args.kd, dt)
     input_range = (-2.0, 2.0)  # the exact inverse needs |v| < 1.9 for |w| <= 5
     echo(f"hystcomp {__version__} demo: {model!r} + piezo stage ({args.stage_hz:g} Hz, damping "
-         f"{args.damping:g}), PID kp={args.kp:g} ki={args.ki:g} kd={args.kd:g}, dt={dt:g} s, "
-         f"{t.size} samples per run")
-    comps = {}
-    for method in ("exact", "analytic"):
-        comps[method] = compensator_system(model, method=method, nominal_gain="auto", input_range=input_range)
-    k_nom = comps["exact"].nominal_gain
+         f"{args.damping:g}), dt = {dt:g} s, {t.size} samples per run; v in V, w and y in um")
+    comp = compensator_system(model, method="exact", nominal_gain="auto", input_range=input_range)
+    comp_analytic = compensator_system(model, method="analytic", nominal_gain="auto", input_range=input_range)
+    k_nom = comp.nominal_gain
+    raw = slope_bounds(model, input_range)
+    echo("")
+    echo(f"1. actuator slopes over v in {input_range} V (hystcomp.analysis.slope_bounds, exact): "
+         f"raw in [{raw.lower:.3f}, {raw.upper:.3f}] um/V; compensated: k_nom = {k_nom:.3f} um/V "
+         "(mean slope; exact inverse with nominal_gain='auto')")
+    # 2-3. one PID family tuned to the same specification, safe crossover of each loop
+    sectors = {"raw": (raw.lower, raw.upper), "compensated": (k_nom, k_nom)}
+    scan = crossover_scan(stage, dt, k_nom, sectors, args.crossovers, args.phase_margin)
+    if not scan:
+        raise ValueError(f"Parameter crossovers is {args.crossovers!r}: no PID with phase margin "
+                         f"{args.phase_margin:g} deg could be designed at any of them")
+    need = float(args.required_margin)
+    echo("")
+    echo(f"2-3. PID tuned for phase margin {args.phase_margin:g} deg at each gain crossover f_c on the nominal "
+         f"loop C k_nom P (roll-off at 2 f_c); circle criterion: factor g the loop gain may grow by with "
+         f"any slope in the sector (safe: g >= {need:g})")
+    head = (f"   {'f_c [Hz]':>8s} {'kp':>8s} {'ki':>8s} {'kd':>9s} {'GM at k_nom':>11s} "
+            f"{'g raw':>7s} {'g comp':>7s}")
+    echo(head)
+    for row in scan:
+        g = row["gains"]
+        echo(f"   {row['crossover_hz']:8g} {g.kp:8.4f} {g.ki:8.2f} {g.kd:9.2e} {row['gain_margin']:11.3f} "
+             f"{row['g_raw']:7.3f} {row['g_compensated']:7.3f}")
+    safe_raw = [r for r in scan if r["g_raw"] >= need]
+    safe_comp = [r for r in scan if r["g_compensated"] >= need]
+    best_raw = safe_raw[-1] if safe_raw else scan[0]
+    best_comp = safe_comp[-1] if safe_comp else scan[0]
+    fc_raw, fc_comp = best_raw["crossover_hz"], best_comp["crossover_hz"]
+    echo(f"   safe crossover: raw loop {fc_raw:g} Hz (g = {best_raw['g_raw']:.2f}), compensated loop "
+         f"{fc_comp:g} Hz (g = {best_comp['g_compensated']:.2f}); the raw loop at {fc_comp:g} Hz has "
+         f"g = {best_comp['g_raw']:.2f}")
+    ctrl = {"raw": best_raw["gains"].system(), "comp": best_comp["gains"].system()}
+    echo("")
+    echo("   margins of the nominal linear loops C k P (python-control stability_margins: GM at the phase "
+         "crossover, PM at the gain crossover)")
+    echo(f"   {'controller':14s} {'actuator gain k':24s} {'GM':>7s} {'PM [deg]':>9s} {'phase crossover':>16s} "
+         f"{'gain crossover':>15s}")
+    from .iosys import discretize
+
+    pd = discretize(stage, dt)
+    g_dc = float(np.real(ct.dcgain(pd)))
+    margins = {}
+    for cname, fc in (("raw", fc_raw), ("comp", fc_comp)):
+        for label, k in (("k_nom", k_nom), ("smallest slope", raw.lower), ("largest slope", raw.upper)):
+            _, gm, pm, fp, fg = stability_table(0, 0, 0, dt, [k], pd, controller=ctrl[cname])[0]
+            margins[(cname, label)] = (gm, pm, fp, fg)
+            echo(f"   {f'f_c = {fc:g} Hz':14s} {label + f' = {k:.3f}':24s} {gm:7.3f} {pm:9.1f} {fp:13.1f} Hz "
+                 f"{fg:12.2f} Hz")
+    # 4. tracking
     work = []
     for f in args.freqs:
         r = reference(t, f)
-        for method, comp in comps.items():
-            loops = build_scenarios(model, stage, controller=controller, compensator=comp, dt=dt)
-            if method != "exact":  # the uncompensated loops do not depend on the compensator
-                loops = {k: v for k, v in loops.items() if k not in ("open_loop", "feedback")}
-            for lp in loops.values():
-                work.append((f, method, lp, r))
+        for key, scen, cname, label in _LOOPS:
+            lp = build_loop(scen, model, stage, controller=ctrl[cname] if cname else None,
+                            compensator=comp if scen in ("feedforward", "feedback_compensated", "two_dof") else None,
+                            dt=dt, name=key,
+                            # the uncompensated open loop is calibrated linearly: 1 / (k_nom G(1))
+                            feedforward_gain=1.0 / (k_nom * g_dc) if scen == "open_loop" else "auto")
+            work.append((f, key, label, lp, r))
+        lp = build_loop("feedforward", model, stage, compensator=comp_analytic, dt=dt, name="feedforward_analytic")
+        work.append((f, "feedforward_analytic", "inverse feedforward (analytic)", lp, r))
     show = _progress(progress_stream)
-    rows, results = [], {}
-    for j, (f, method, lp, r) in enumerate(work):
+    rows, responses = [], {}
+    for j, (f, key, label, lp, r) in enumerate(work):
         res = compare([lp], r, t, engine=args.engine)
         row = dict(res.rows[0])
-        row.update(reference_hz=f, compensator=method if lp.compensator is not None else "none")
+        fc = {"pid_raw_safe": fc_raw}.get(key, fc_comp if key in ("pid_raw_fast", "pid_compensated", "two_dof")
+                                           else float("nan"))
+        row.update(reference_hz=f, loop=key, label=label, crossover_hz=fc)
         rows.append(row)
-        results[(f, method, lp.scenario)] = res
-        show(j + 1, len(work), f"{f:g} Hz {method} {lp.scenario}")
+        responses[(f, key)] = res.responses[key]
+        show(j + 1, len(work), f"{f:g} Hz {key}")
     echo("")
-    echo(f"Tracking error y - r (reference 5 sin(2 pi f t)/(1 + 0.1 t), span {np.ptp(reference(t, 1.0)):.3g}); "
-         f"compensators with nominal gain k = {k_nom:.4f} (mean slope over v in {input_range})")
-    head = (f"{'f [Hz]':>6s} {'compensator':11s} {'scenario':22s} {'RMS':>9s} {'max':>9s} {'RMS %':>8s} "
-            f"{'max %':>8s} {'width %':>8s}")
+    echo(f"4. tracking error y - r [um], reference 5 sin(2 pi f t)/(1 + 0.1 t) (span "
+         f"{np.ptp(reference(t, 1.0)):.3g} um)")
+    head = f"   {'f [Hz]':>6s} {'loop':36s} {'f_c [Hz]':>8s} {'RMS':>9s} {'max':>9s} {'RMS %':>8s} {'max %':>8s}"
     echo(head)
-    echo("-" * len(head))
+    echo("   " + "-" * (len(head) - 3))
     for row in rows:
-        echo(f"{row['reference_hz']:6g} {row['compensator']:11s} {row['scenario']:22s} {row['rms']:9.4g} "
-             f"{row['max']:9.4g} {row['rms_percent']:8.3g} {row['max_percent']:8.3g} "
-             f"{row['loop_width_percent']:8.3g}")
+        echo(f"   {row['reference_hz']:6g} {row['label']:36s} {row['crossover_hz']:8g} {row['rms']:9.4g} "
+             f"{row['max']:9.4g} {row['rms_percent']:8.3g} {row['max_percent']:8.3g}")
     files = []
     path = os.path.join(out, "loop_comparison.csv")
-    fields = ["reference_hz", "compensator", "scenario", "label", "engine", "rms", "max", "rms_percent",
+    fields = ["reference_hz", "loop", "label", "scenario", "crossover_hz", "engine", "rms", "max", "rms_percent",
               "max_percent", "loop_width", "loop_width_percent", "seconds"]
-    import csv
-
     with open(path, "w", newline="") as fh:
         w = csv.DictWriter(fh, fieldnames=fields)
         w.writeheader()
         for row in rows:
-            w.writerow({k: row[k] for k in fields})
+            w.writerow({k: row.get(k, row.get("scenario")) for k in fields})
     files.append(path)
-    # checks of the issue
+
+    def rms(f, key):
+        return next(r["rms"] for r in rows if r["reference_hz"] == f and r["loop"] == key)
+
     checks = {}
-
-    def get(f, method, scen):
-        comp = "none" if scen in ("open_loop", "feedback") else method
-        for row in rows:
-            if row["reference_hz"] == f and row["compensator"] == comp and row["scenario"] == scen:
-                return row["rms"]
-        raise KeyError((f, method, scen))
-
     for f in args.freqs:
-        for method in comps:
-            ol, ff = get(f, method, "open_loop"), get(f, method, "feedforward")
-            checks[f"feedforward {method} {f:g} Hz"] = (
-                ff * 10 <= ol, f"inverse feedforward ({method}) cuts the open-loop RMS error {ol / ff:.1f}x "
-                               f"at {f:g} Hz (target >= 10x): {ol:.4g} -> {ff:.4g}")
-            fb, fbc = get(f, method, "feedback"), get(f, method, "feedback_compensated")
-            checks[f"pid+comp {method} {f:g} Hz"] = (
-                fbc < fb, f"PID + {method} compensator beats PID alone at {f:g} Hz: {fb:.4g} -> {fbc:.4g} RMS")
+        ol = rms(f, "open_loop")
+        worst = max(("pid_raw_safe", "pid_raw_fast", "pid_compensated", "two_dof"), key=lambda k: rms(f, k))
+        checks[f"feedback beats open loop {f:g} Hz"] = (
+            rms(f, worst) < ol, f"every feedback loop beats open loop at {f:g} Hz: worst {worst} "
+                                f"{rms(f, worst):.4g} < open loop {ol:.4g} RMS")
+        ff = rms(f, "feedforward")
+        checks[f"feedforward {f:g} Hz"] = (
+            ff * 10 <= ol, f"inverse feedforward (exact) cuts the open-loop RMS error {ol / ff:.1f}x at {f:g} Hz "
+                           f"(target >= 10x): {ol:.4g} -> {ff:.4g}")
+        a, b = rms(f, "pid_raw_safe"), rms(f, "pid_compensated")
+        checks[f"bandwidth pays {f:g} Hz"] = (
+            b < a, f"PID + compensator at {fc_comp:g} Hz beats the raw loop at its safe {fc_raw:g} Hz at {f:g} Hz: "
+                   f"{a:.4g} -> {b:.4g} RMS ({a / b:.2f}x)")
+    checks["compensation buys bandwidth"] = (
+        fc_comp > fc_raw and best_comp["g_raw"] < need <= best_comp["g_compensated"],
+        f"at {fc_comp:g} Hz the compensated loop is guaranteed g = {best_comp['g_compensated']:.2f} >= {need:g}, "
+        f"the raw loop only g = {best_comp['g_raw']:.2f} (its safe crossover: {fc_raw:g} Hz)")
     echo("")
     echo("checks")
     for ok, text in checks.values():
         echo(f"  {'PASS' if ok else 'FAIL'}  {text}")
-    # stability of the nominal linear loops
-    from .iosys import discretize
-
-    plant_d = discretize(stage, dt)
-    # slopes of the raw actuator near v = 0: p0 gamma'(0) just after a reversal
-    # (only the r = 0 operator moves), (p0 + sum p_i) gamma'(0) on a long stroke
-    dg0 = float(model.envelope.derivative(0.0))
-    k_lo, k_hi = model.p0 * dg0, (model.p0 + float(np.sum(model.weights))) * dg0
-    echo("")
-    echo("stability margins of the nominal linear loop C(z) k P(z) (python-control stability_margins)")
-    echo(f"  {'actuator gain k':30s} {'gain margin':>12s} {'phase margin':>13s} {'at':>10s}")
-    for label, k in (("compensated, k_nom", k_nom), ("raw, smallest slope", k_lo), ("raw, largest slope", k_hi)):
-        _, gm, pm, fc = stability_table(args.kp, args.ki, args.kd, dt, [k], plant_d)[0]
-        echo(f"  {label + f' = {k:.3f}':30s} {gm:12.3g} {pm:12.3g}d {fc:8.3g}Hz")
+    design = dict(raw_hz=fc_raw, compensated_hz=fc_comp, raw_sector=(raw.lower, raw.upper), nominal_gain=k_nom,
+                  margins=margins, controllers=ctrl)
     if not args.no_figures:
-        import matplotlib
-
-        matplotlib.use("Agg")
-        from .loops import Comparison, plot_comparison
-
-        for f in args.freqs:
-            for method in comps:
-                keys = [(f, "exact", "open_loop"), (f, method, "feedforward"), (f, "exact", "feedback"),
-                        (f, method, "feedback_compensated"), (f, method, "two_dof")]
-                rows_f = [results[k].rows[0] for k in keys]
-                resp = {results[k].rows[0]["scenario"]: results[k].responses[results[k].rows[0]["scenario"]]
-                        for k in keys}
-                comp_ = Comparison(rows_f, resp, reference(t, f), t)
-                fig = plot_comparison(comp_, title=f"{f:g} Hz reference, {method} compensator "
-                                                   f"(nominal gain {k_nom:.3f}), PID ki = {args.ki:g}",
-                                      time_window=(0.0, min(t[-1], 2.0 / f)))
-                path = os.path.join(out, f"loops_{f:g}Hz_{method}.png")
-                fig.savefig(path, dpi=90)
-                files.append(path)
+        files += _figures(out, args, t, rows, responses, scan, design, need)
     for p in files:
         echo(f"  wrote {p}")
-    return dict(rows=rows, checks=checks, files=files)
+    return dict(rows=rows, scan=scan, design=design, checks=checks, files=files)
+
+
+def _figures(out, args, t, rows, responses, scan, design, need):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from .plotting import new_figure
+
+    files = []
+    fig, ax = new_figure(1, 1, size=(6.4, 4.2))
+    fcs = [r["crossover_hz"] for r in scan]
+    ax.plot(fcs, [r["g_compensated"] for r in scan], "o-", label="compensated: sector [k_nom, k_nom]")
+    ax.plot(fcs, [r["g_raw"] for r in scan], "s-", label=f"raw: sector [{design['raw_sector'][0]:.2f}, "
+                                                         f"{design['raw_sector'][1]:.2f}] um/V")
+    ax.axhline(need, color="k", ls="--", lw=1, label=f"required g = {need:g}")
+    ax.set(xlabel="gain crossover f_c [Hz] (phase margin %g deg)" % args.phase_margin,
+           ylabel="guaranteed gain factor g (circle criterion)",
+           title="How far the loop gain may grow with any actuator slope")
+    ax.set_ylim(0, None)
+    ax.grid(True, alpha=0.3)
+    ax.legend(fontsize=8, loc="upper right")
+    path = os.path.join(out, "crossover_scan.png")
+    fig.savefig(path, dpi=90)
+    files.append(path)
+    keys = ("open_loop", "pid_raw_safe", "pid_raw_fast", "pid_compensated", "two_dof")
+    short = {"open_loop": "open loop", "pid_raw_safe": "PID, raw actuator", "pid_raw_fast": "PID, raw actuator",
+             "pid_compensated": "PID + compensator", "two_dof": "feedforward + PID + compensator"}
+    for f in args.freqs:
+        fig, axes = new_figure(1, 3, size=(15, 4.6))
+        r = reference(t, f)
+        win = t <= min(t[-1], 2.0 / f)
+        last = t >= t[-1] - 1.0 / f   # one period at the end: no overplotted bands
+        axes[0].plot(t[win], r[win], "k--", lw=1.2, label="reference r")
+        for key in keys:
+            row = next(x for x in rows if x["reference_hz"] == f and x["loop"] == key)
+            y = np.asarray(responses[(f, key)].outputs)[0]
+            fc = "" if np.isnan(row["crossover_hz"]) else f", f_c {row['crossover_hz']:g} Hz"
+            lab = f"{short[key]}{fc}: {row['rms_percent']:.2g} % RMS"
+            axes[0].plot(t[win], y[win], lw=0.9, label=lab)
+            axes[1].plot(t[win], (y - r)[win], lw=0.9, label=lab)
+            axes[2].plot(r[last], (y - r)[last], lw=0.9, label=lab)
+        axes[0].set(xlabel="time t [s]", ylabel="position y [um]", title="tracking")
+        axes[1].set(xlabel="time t [s]", ylabel="error y - r [um]", title="tracking error", yscale="symlog")
+        axes[1].set_yscale("symlog", linthresh=1e-3)
+        axes[2].set(xlabel="reference r [um]", ylabel="error y - r [um]", title="error against reference (last period)")
+        axes[2].set_yscale("symlog", linthresh=1e-3)
+        for ax in axes:
+            ax.grid(True, alpha=0.3)
+        handles, labels = axes[0].get_legend_handles_labels()
+        fig.legend(handles, labels, loc="outside lower center", ncols=3, fontsize=8)
+        fig.suptitle(f"{f:g} Hz reference; PID tuned to {args.phase_margin:g} deg phase margin, exact compensator "
+                     f"(k_nom = {design['nominal_gain']:.3f} um/V)")
+        path = os.path.join(out, f"loops_{f:g}Hz.png")
+        fig.savefig(path, dpi=90)
+        files.append(path)
+    return files
 
 
 def main(argv=None):
@@ -347,8 +532,8 @@ def main(argv=None):
     --------
     >>> import contextlib, io, tempfile
     >>> with contextlib.redirect_stdout(io.StringIO()) as text, contextlib.redirect_stderr(io.StringIO()):
-    ...     code = main(["--out", tempfile.mkdtemp(), "--duration", "0.05", "--freqs", "5",
-    ...                  "--no-figures"])
+    ...     code = main(["--out", tempfile.mkdtemp(), "--duration", "0.5", "--freqs", "5",
+    ...                  "--crossovers", "50", "80", "--no-figures"])
     >>> code, [line.split()[0] for line in text.getvalue().splitlines()
     ...        if line.startswith(("  PASS", "  FAIL"))]
     (0, ['PASS', 'PASS', 'PASS', 'PASS'])

@@ -20,8 +20,16 @@ model that follows it works; PI, mGPI, StopPI and exact inverses call the
 compiled kernels directly (fast paths that run the same kernel with the same
 arguments as ``simulate``, hence the same numbers).
 
-Model data stay in closures, never in python-control's ``params`` (an
-interconnection merges the params of all its subsystems into one dict).
+Model data stay in the blocks' step objects, never in python-control's
+``params`` (an interconnection merges the params of all its subsystems into
+one dict).  Blocks, loops and their results pickle with plain :mod:`pickle`
+(so an executor can run them in other processes): the step functions are
+module-level objects, and, because python-control 0.10's
+:class:`control.StateSpace` stores two lambdas and so cannot be pickled,
+importing this module registers :mod:`copyreg` reducers that rebuild a
+StateSpace from its matrices, timebase and signal names and an
+InterconnectedSystem from its attributes (only when python-control's own
+pickling fails).
 
 Examples
 --------
@@ -36,6 +44,8 @@ Examples
 True
 """
 
+import copyreg
+import pickle
 import warnings
 
 import numpy as np
@@ -51,6 +61,63 @@ __all__ = [
     "piezo_stage", "pid", "discretize", "check_wiring", "interconnect",
     "WiringError",
 ]
+
+
+def _rebuild_state_space(A, B, C, D, dt, name, inputs, outputs, states, attributes):
+    sys = ct.ss(A, B, C, D, dt, name=name, inputs=inputs, outputs=outputs, states=states)
+    sys.__dict__.update(attributes)
+    return sys
+
+
+def _reduce_state_space(sys):
+    attributes = {k: v for k, v in vars(sys).items() if not callable(v)}
+    return _rebuild_state_space, (sys.A, sys.B, sys.C, sys.D, sys.dt, sys.name, sys.input_labels,
+                                  sys.output_labels, sys.state_labels, attributes)
+
+
+class _InterconnectedUpdate:
+    """python-control's InterconnectedSystem update/output (``_rhs``/``_out``
+    after ``_update_params``), as a picklable object bound to the system."""
+
+    def __init__(self, sys, method):
+        self.sys, self.method = sys, method
+
+    def __call__(self, t, x, u, params):
+        self.sys._update_params(params)
+        return getattr(self.sys, self.method)(t, x, u)
+
+
+def _rebuild_interconnected(cls, attributes):
+    sys = cls.__new__(cls)
+    sys.__dict__.update(attributes)
+    sys.updfcn = _InterconnectedUpdate(sys, "_rhs")
+    sys.outfcn = _InterconnectedUpdate(sys, "_out")
+    return sys
+
+
+def _reduce_interconnected(sys):
+    attributes = {k: v for k, v in vars(sys).items() if k not in ("updfcn", "outfcn")}
+    return _rebuild_interconnected, (type(sys), attributes)
+
+
+def _register_state_space_pickling():
+    """Register the reducers if python-control's systems do not pickle."""
+    try:
+        pickle.dumps(ct.ss([[0.0]], [[1.0]], [[1.0]], [[0.0]], 0.1))
+    except (AttributeError, pickle.PicklingError, TypeError):
+        copyreg.pickle(ct.StateSpace, _reduce_state_space)
+    a = ct.nlsys(None, _static_gain_output, inputs="u", outputs="y", name="a", dt=0.1)
+    try:
+        pickle.dumps(ct.interconnect([a], inplist="u", outlist="y"))
+    except (AttributeError, pickle.PicklingError, TypeError):
+        copyreg.pickle(ct.InterconnectedSystem, _reduce_interconnected)
+
+
+def _static_gain_output(t, x, u, params):
+    return u
+
+
+_register_state_space_pickling()
 
 
 class WiringError(ValueError):
@@ -74,119 +141,162 @@ class WiringError(ValueError):
 
 
 # ----------------------------------------------------------------------------
-# step functions: (output, update) pairs on an explicit state
+# step functions: (output, update) on an explicit state, as module-level
+# callable objects so that blocks pickle with plain pickle
 # ----------------------------------------------------------------------------
-def _generic_steps(obj, gain=1.0):
-    """Output and update of any object with the simulate protocol."""
+def _scalar_input(u):
+    return float(np.asarray(u).reshape(-1)[0])
 
-    def run(x, u):
+
+class _Steps:
+    """Output and update of a block: ``output(t, x, u, params)`` and
+    ``update(t, x, u, params)`` for python-control, from ``run(x, u) ->
+    (y, new_state)`` of a subclass; ``gain`` scales the input first."""
+
+    gain = 1.0
+
+    def output(self, t, x, u, params):
+        return self.run(x, self.gain * _scalar_input(u))[0]
+
+    def update(self, t, x, u, params):
+        return self.run(x, self.gain * _scalar_input(u))[1]
+
+
+class _GenericSteps(_Steps):
+    """Any object with the simulate protocol, one sample at a time."""
+
+    def __init__(self, obj, gain=1.0):
+        self.obj, self.gain = obj, float(gain)
+
+    def run(self, x, u):
         with warnings.catch_warnings():
             # clipped targets are actuator saturation inside a loop; a warning
             # per step would flood the console
             warnings.simplefilter("ignore")
-            y, s = obj.simulate(np.array([gain * u]), initial_state=x, return_state=True)
-        return y, s
-
-    def out(x, u):
-        return run(x, u)[0]
-
-    def upd(x, u):
-        return run(x, u)[1]
-
-    return out, upd
+            return self.obj.simulate(np.array([u]), initial_state=x, return_state=True)
 
 
-def _model_kernel_steps(model):
-    """Fast steps for models with a compiled forward kernel, or None.
+class _KernelSteps(_Steps):
+    """Models with a compiled forward kernel (symmetric and asymmetric mGPI,
+    PI, StopPI): the same kernel with the same arguments as
+    ``model.simulate`` on a one-sample record, so the block equals the model
+    bit for bit."""
 
-    They call the same kernel with the same arguments as ``model.simulate``
-    on a one-sample record, so the block equals the model bit for bit.
-    """
-    if type(model) in (MGPI,) or isinstance(model, MGPI):
-        if model.symmetric:
-            kind, prm = model.envelope_left.kernel_spec()
-            if kind == _k.CUSTOM:
-                return None
-            r, p, p0 = model._r, model._p, model.p0
-
-            def run(x, u):
-                z = np.array(x, dtype=np.float64)
-                y = np.empty(1)
-                _k.play_sum(np.array([float(u)]), r, p, p0, z, kind, prm, y)
-                return y, z
-        else:
+    def __init__(self, model, gain=1.0):
+        self.model, self.gain = model, float(gain)
+        if isinstance(model, MGPI) and model.symmetric:
+            self.mode = "play"
+            self.args = (model._r, model._p, model.p0) + tuple(model.envelope_left.kernel_spec())
+        elif isinstance(model, MGPI):
             kl, pl = model.envelope_left.kernel_spec()
             kr, pr = model.envelope_right.kernel_spec()
-            if _k.CUSTOM in (kl, kr):
-                return None
-            r = np.concatenate([[0.0], model._r])
-            p = np.concatenate([[model.p0], model._p])
+            self.mode = "mplay"
+            self.args = (np.concatenate([[0.0], model._r]), np.concatenate([[model.p0], model._p]),
+                         kl, pl, kr, pr)
+        else:
+            self.mode = "stop"
+            self.args = (model._r, model._p, model.p0)
 
-            def run(x, u):
-                w = np.array(x, dtype=np.float64)
-                y = np.empty(1)
-                _k.mplay_sum(np.array([float(u)]), r, p, w, kl, pl, kr, pr, y)
-                return y, w
-    elif isinstance(model, StopPI):
-        r, p, p0 = model._r, model._p, model.p0
+    @staticmethod
+    def supports(model):
+        """True when `model` has a compiled forward kernel this class runs."""
+        if isinstance(model, MGPI):
+            kinds = [model.envelope_left.kernel_spec()[0]]
+            if not model.symmetric:
+                kinds.append(model.envelope_right.kernel_spec()[0])
+            return _k.CUSTOM not in kinds
+        return isinstance(model, StopPI)
 
-        def run(x, u):
+    def run(self, x, u):
+        y = np.empty(1)
+        v = np.array([float(u)])
+        if self.mode == "play":
+            r, p, p0, kind, prm = self.args
+            s = np.array(x, dtype=np.float64)
+            _k.play_sum(v, r, p, p0, s, kind, prm, y)
+        elif self.mode == "mplay":
+            r, p, kl, pl, kr, pr = self.args
+            s = np.array(x, dtype=np.float64)
+            _k.mplay_sum(v, r, p, s, kl, pl, kr, pr, y)
+        else:
+            r, p, p0 = self.args
             s = np.array(x, dtype=np.float64)
             w = s[:-1].copy()
-            y = np.empty(1)
-            s[-1] = _k.stop_sum(np.array([float(u)]), r, p, p0, w, s[-1], y)
+            s[-1] = _k.stop_sum(v, r, p, p0, w, s[-1], y)
             s[:-1] = w
-            return y, s
-    else:
-        return None
-
-    def checked(x, u):
-        y, s = run(x, u)
         if not np.isfinite(y[0]):
             # the kernels count inputs outside an envelope's domain as +-inf;
             # say so here rather than let python-control see NaN (which it
             # reports as an algebraic loop)
-            model._check_input_domain(np.array([float(u)]))
+            self.model._check_input_domain(v)
             raise ValueError(f"Block input {u!r} gives the non-finite output {y[0]} from the state {x!r} "
-                             f"of {model!r}")
+                             f"of {self.model!r}")
         return y, s
 
-    return (lambda x, u: checked(x, u)[0]), (lambda x, u: checked(x, u)[1])
 
+class _ExactInverseSteps(_Steps):
+    """An ExactInverse: the compiled solver on one sample, with the
+    arguments ``ExactInverse.simulate`` passes it."""
 
-def _exact_inverse_steps(comp, gain):
-    """Fast steps of an ExactInverse: the compiled solver on one sample,
-    with the arguments ``ExactInverse.simulate`` passes it."""
-    fam = comp._fam
-    args = (comp._r, comp._p, comp._p0)
-    env = (comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph, comp._hscale)
-    lo, hi = comp.input_limits
+    def __init__(self, comp, gain):
+        self.comp, self.gain = comp, float(gain)
 
-    def run(x, u):
+    def run(self, x, u):
+        comp = self.comp
+        fam = comp._fam
+        lo, hi = comp.input_limits
         st = np.array(x, dtype=np.float64)
         xprev = st[0]
         kstate = st[1:-1].copy() if fam == _k.FAM_STOP else st[1:].copy()
         out = np.empty(1)
         info = np.zeros(3, dtype=np.int64)
-        xlast = _k.inverse_solve(fam, np.array([gain * u]), args[0], args[1], args[2], kstate, xprev,
-                                 *env, lo, hi, 1e-14, out, info)
+        xlast = _k.inverse_solve(fam, np.array([u]), comp._r, comp._p, comp._p0, kstate, xprev,
+                                 comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph, comp._hscale,
+                                 lo, hi, 1e-14, out, info)
         if fam == _k.FAM_STOP:
             new = np.concatenate([[xlast], kstate, [xlast]])
         else:
             new = np.concatenate([[xlast], kstate])
         return out, new
 
-    return (lambda x, u: run(x, u)[0]), (lambda x, u: run(x, u)[1])
+
+def _steps_for(obj, gain=1.0):
+    """The fastest step object for a model or compensator."""
+    from .inverses import ExactInverse
+
+    if isinstance(obj, ExactInverse):
+        return _ExactInverseSteps(obj, gain)
+    if isinstance(obj, HysteresisModel) and _KernelSteps.supports(obj):
+        return _KernelSteps(obj, gain)
+    return _GenericSteps(obj, gain)
 
 
-def _block(kind, obj, out, upd, n_states, dt, name, inputs, outputs, extra=None):
-    def updfcn(t, x, u, params):
-        return upd(x, float(np.asarray(u).reshape(-1)[0]))
+def _check_dt(dt):
+    """A block's sampling time: True (inherit) or a positive finite float.
 
-    def outfcn(t, x, u, params):
-        return out(x, float(np.asarray(u).reshape(-1)[0]))
+    hystcomp blocks are discrete: their update is the state after one
+    sample, which python-control would take as a derivative if dt were 0.
+    """
+    if dt is True:
+        return dt
+    bad = dt is None or isinstance(dt, (bool, str)) or not np.isscalar(dt)
+    if not bad:
+        try:
+            bad = not (np.isfinite(float(dt)) and float(dt) > 0)
+        except (TypeError, ValueError):
+            bad = True
+    if bad:
+        raise ValueError(
+            f"Parameter dt is {dt!r} but should be True (inherit the loop's sampling time) or a positive "
+            "finite sampling time in seconds; hystcomp blocks are discrete-time (dt = 0 or None would make "
+            "python-control read the state update as a derivative)"
+        )
+    return float(dt)
 
-    sys = ct.nlsys(updfcn, outfcn, states=n_states, inputs=inputs, outputs=outputs, dt=dt, name=name)
+
+def _block(kind, obj, steps, n_states, dt, name, inputs, outputs, extra=None):
+    sys = ct.nlsys(steps.update, steps.output, states=n_states, inputs=inputs, outputs=outputs,
+                   dt=_check_dt(dt), name=name)
     # read by hystcomp.loops (compiled loops, default initial states, wiring
     # checks); python-control ignores them
     sys._hystcomp = dict(kind=kind, object=obj, feedthrough=True, default_state=obj.default_state(),
@@ -242,11 +352,7 @@ def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w"):
     (20, ['v'], ['w'])
     """
     _check_protocol(model, "model")
-    steps = _model_kernel_steps(model) if isinstance(model, HysteresisModel) else None
-    if steps is None:
-        steps = _generic_steps(model)
-    out, upd = steps
-    return _block("hysteresis", model, out, upd, model.n_states, dt, name, inputs, outputs)
+    return _block("hysteresis", model, _steps_for(model), model.n_states, dt, name, inputs, outputs)
 
 
 def mean_gain(model, input_range, n_samples=2001):
@@ -358,24 +464,8 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
         k = mean_gain(model, input_range)
     else:
         k = as_scalar(nominal_gain, "nominal_gain", positive=True)
-    from .inverses import ExactInverse
-
-    if isinstance(compensator, ExactInverse):
-        steps = _exact_inverse_steps(compensator, k)
-    else:
-        steps = None
-        if k == 1.0 and isinstance(compensator, HysteresisModel):
-            steps = _model_kernel_steps(compensator)
-        elif isinstance(compensator, HysteresisModel):
-            fast = _model_kernel_steps(compensator)
-            if fast is not None:
-                o, u_ = fast
-                steps = (lambda x, u: o(x, k * u)), (lambda x, u: u_(x, k * u))
-        if steps is None:
-            steps = _generic_steps(compensator, gain=k)
-    out, upd = steps
-    sys = _block("compensator", compensator, out, upd, compensator.n_states, dt, name, inputs, outputs,
-                 extra=dict(nominal_gain=k, method=method_used))
+    sys = _block("compensator", compensator, _steps_for(compensator, k), compensator.n_states, dt, name,
+                 inputs, outputs, extra=dict(nominal_gain=k, method=method_used))
     sys.nominal_gain = k
     sys.compensator = compensator
     return sys
@@ -500,6 +590,29 @@ def piezo_stage(gain=1.0, natural_freq_hz=300.0, damping=0.05, dt=None, name="st
     return sys if dt is None else discretize(sys, dt)
 
 
+class _SaturatedPID:
+    """Output and update of :func:`pid` with output limits (conditional
+    integration), as a module-level object so that the block pickles."""
+
+    def __init__(self, C, D, a, dt, lo, hi):
+        self.c0, self.c1, self.d = float(C[0, 0]), float(C[0, 1]), float(D[0, 0])
+        self.a, self.dt, self.lo, self.hi = a, dt, lo, hi
+
+    def _raw(self, x, e):
+        return self.c0 * x[0] + self.c1 * x[1] + self.d * e
+
+    def output(self, t, x, u, params):
+        e = _scalar_input(u)
+        return np.array([min(max(self._raw(x, e), self.lo), self.hi)])
+
+    def update(self, t, x, u, params):
+        e = _scalar_input(u)
+        uu = self._raw(x, e)
+        hold = (uu > self.hi and e > 0.0) or (uu < self.lo and e < 0.0)
+        integ = x[0] if hold else x[0] + self.dt * e
+        return np.array([integ, self.a * x[1] + (1.0 - self.a) * e])
+
+
 def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", outputs="u"):
     """A discrete PID controller with a filtered derivative.
 
@@ -557,21 +670,9 @@ def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", 
         raise ValueError(f"Parameter output_limits is {output_limits!r} but should satisfy lo < hi")
     info["limits"] = (lo, hi)
 
-    def raw(x, e):
-        return C[0, 0] * x[0] + C[0, 1] * x[1] + D[0, 0] * e
-
-    def outfcn(t, x, u, params):
-        e = float(np.asarray(u).reshape(-1)[0])
-        return np.array([min(max(raw(x, e), lo), hi)])
-
-    def updfcn(t, x, u, params):
-        e = float(np.asarray(u).reshape(-1)[0])
-        uu = raw(x, e)
-        hold = (uu > hi and e > 0.0) or (uu < lo and e < 0.0)
-        integ = x[0] if hold else x[0] + dt * e
-        return np.array([integ, a * x[1] + (1.0 - a) * e])
-
-    sys = ct.nlsys(updfcn, outfcn, states=["I", "f"], inputs=inputs, outputs=outputs, dt=dt, name=name)
+    steps = _SaturatedPID(C, D, a, dt, lo, hi)
+    sys = ct.nlsys(steps.update, steps.output, states=["I", "f"], inputs=inputs, outputs=outputs, dt=dt,
+                   name=name)
     sys._hystcomp = info
     return sys
 
@@ -605,11 +706,36 @@ def _timebase(sys):
     return float(dt)
 
 
-def check_wiring(syslist, inplist, outlist):
-    """Check a name-connected loop before python-control sees it.
+def _signal_base(spec, syslist, kind):
+    """The plain signal name of an inplist/outlist entry, or None.
 
-    Signals with equal names are connected (python-control's
-    ``interconnect`` without ``connections``).  Raises :class:`WiringError`
+    Accepts python-control's forms ``"sig"``, ``"-sig"``, ``"sys.sig"``,
+    ``"-sys.sig"`` and ``"sys.sig[i]"``; a ``"sys.sig"`` whose block does not
+    have that signal raises :class:`WiringError`.  Other forms (tuples,
+    lists, indices) return None and are left to python-control.
+    """
+    if not isinstance(spec, str):
+        return None
+    name = spec.lstrip("-").split("[")[0]
+    blocks = {s.name: s for s in syslist}
+    if "." in name and name.split(".", 1)[0] in blocks:
+        bname, sig = name.split(".", 1)
+        blk = blocks[bname]
+        labels = blk.input_labels if kind == "input" else blk.output_labels + blk.input_labels
+        if sig not in labels:
+            raise WiringError(f"{kind} {spec!r}: block {bname!r} has no signal {sig!r}; its "
+                              f"{'inputs' if kind == 'input' else 'signals'} are {labels}")
+        return sig
+    return name
+
+
+def check_wiring(syslist, inplist, outlist, connections=None):
+    """Check a loop before python-control sees it.
+
+    Without `connections`, signals with equal names are connected
+    (python-control's ``interconnect`` without ``connections``).  Entries of
+    `inplist` and `outlist` may be python-control's ``"sys.sig"`` names.
+    Raises :class:`WiringError`
     naming the blocks for: duplicate block names, continuous blocks among
     discrete ones, different sampling times, an input no block drives, an
     unknown name in `inplist` / `outlist`, and an algebraic loop (a cycle of
@@ -623,6 +749,11 @@ def check_wiring(syslist, inplist, outlist):
         External inputs of the loop (signal names; a leading "-" is allowed).
     outlist : str or list of str
         Outputs of the loop (signal names; a leading "-" is allowed).
+    connections : list or False, optional
+        python-control's explicit connections.  When given, the blocks are
+        not connected by name, so the name-based checks (undriven inputs,
+        algebraic loops) are left to python-control; block names,
+        timebases and the `inplist`/`outlist` names are still checked.
 
     Raises
     ------
@@ -671,20 +802,26 @@ def check_wiring(syslist, inplist, outlist):
         for sig in s.output_labels:
             drivers.setdefault(sig, []).append(s.name)
     known = sorted(set(drivers) | {sig for s in syslist for sig in s.input_labels})
-    for sig in inplist:
-        base = sig.lstrip("-")
+    in_bases = [b for b in (_signal_base(sig, syslist, "input") for sig in inplist) if b is not None]
+    out_specs = [(sig, _signal_base(sig, syslist, "output")) for sig in outlist]
+    for sig, base in zip(inplist, [_signal_base(sig, syslist, "input") for sig in inplist]):
+        if base is None:
+            continue
         if not any(base in s.input_labels for s in syslist):
             raise WiringError(
                 f"external input {sig!r} is not an input of any block; block inputs are "
                 f"{sorted({x for s in syslist for x in s.input_labels})}"
             )
-    for sig in outlist:
-        base = sig.lstrip("-")
+    for sig, base in out_specs:
+        if base is None:
+            continue
         if base not in drivers and not any(base in s.input_labels for s in syslist):
             raise WiringError(f"output {sig!r} is not a signal of the loop; known signals are {known}")
+    if connections is not None:
+        return
     for s in syslist:
         for sig in s.input_labels:
-            if sig not in drivers and sig not in inplist:
+            if sig not in drivers and sig not in in_bases:
                 raise WiringError(
                     f"input {sig!r} of block {s.name!r} is driven by no block output and is not an "
                     f"external input; block outputs are {sorted(drivers)} (rename a signal or add "
@@ -730,13 +867,16 @@ def interconnect(syslist, inplist, outlist, name=None, **kwargs):
     Parameters
     ----------
     syslist : list of control.InputOutputSystem
-        The blocks; signals with equal names are connected.
+        The blocks; signals with equal names are connected unless
+        ``connections=`` is passed (python-control's explicit form).
     inplist, outlist : str or list of str
-        External inputs and outputs of the interconnection (signal names).
+        External inputs and outputs of the interconnection (signal names,
+        or python-control's ``"sys.sig"`` names).
     name : str, optional
         Name of the interconnected system.
     **kwargs
-        Passed on to :func:`control.interconnect`.
+        Passed on to :func:`control.interconnect` (``connections=``,
+        ``params=``, ...).
 
     Returns
     -------
@@ -758,5 +898,5 @@ def interconnect(syslist, inplist, outlist, name=None, **kwargs):
     >>> sys.dt, sys.nstates
     (0.0001, 3)
     """
-    check_wiring(syslist, inplist, outlist)
+    check_wiring(syslist, inplist, outlist, connections=kwargs.get("connections"))
     return ct.interconnect(list(syslist), inplist=inplist, outlist=outlist, name=name, **kwargs)

@@ -43,23 +43,24 @@ True
 import csv
 import sys
 import time
+from concurrent.futures import as_completed
 
 import numpy as np
 
 import control as ct
 
-from . import _kernels as _k
 from . import _loop_kernels as _lk
 from ._validation import as_scalar, as_signal, check_choice
 from .iosys import (
     WiringError, _feedthrough, compensator_system, discretize, hysteresis_system, initial_state,
     interconnect, pid,
 )
-from .models import MGPI, HysteresisModel, StopPI
+from ._block_specs import _NONE_SPEC, _spec, _ss_arrays
+from ._fast_loops import fast_response
 
 __all__ = [
     "SCENARIOS", "Loop", "build_loop", "build_scenarios", "simulate_loop", "compare", "Comparison",
-    "loop_width", "plot_comparison",
+    "loop_width", "plot_comparison", "fast_response",
 ]
 
 SCENARIOS = ("open_loop", "feedforward", "feedback", "feedback_compensated", "two_dof")
@@ -389,58 +390,6 @@ def build_scenarios(hysteresis, plant, controller=None, compensator=None, dt=Non
 # ----------------------------------------------------------------------------
 # compiled loops
 # ----------------------------------------------------------------------------
-_EMPTY = np.zeros(1)
-
-
-def _spec(obj, role):
-    """Kernel arguments of a block: (code, fam, r, p, p0, kl, pl, kr, pr, kh,
-    ph, hscale, lo, hi, state, xprev, pack) or None; `pack(state, xprev)`
-    rebuilds the explicit state."""
-    from .inverses import ExactInverse
-
-    st = np.asarray(obj.default_state(), dtype=np.float64)
-    if isinstance(obj, ExactInverse):
-        fam = obj._fam
-        lo, hi = obj.input_limits
-        common = (_lk.B_EXACT, fam, obj._r, obj._p, float(obj._p0), obj._kl, obj._pl, obj._kr, obj._pr,
-                  obj._kh, obj._ph, float(obj._hscale), float(lo), float(hi))
-        if fam == _k.FAM_STOP:
-            return common + (st[1:-1].copy(), float(st[0]),
-                             lambda s, x: np.concatenate([[x], s, [x]]))
-        return common + (st[1:].copy(), float(st[0]), lambda s, x: np.concatenate([[x], s]))
-    if isinstance(obj, MGPI):
-        if obj.symmetric:
-            kind, prm = obj.envelope_left.kernel_spec()
-            if kind == _k.CUSTOM:
-                return None
-            return (_lk.B_PLAY, 0, obj._r, obj._p, float(obj.p0), kind, prm, 0, _EMPTY, 0, _EMPTY, 0.0,
-                    0.0, 0.0, st.copy(), 0.0, lambda s, x: s.copy())
-        kl, pl = obj.envelope_left.kernel_spec()
-        kr, pr = obj.envelope_right.kernel_spec()
-        if _k.CUSTOM in (kl, kr):
-            return None
-        r = np.concatenate([[0.0], obj._r])
-        p = np.concatenate([[obj.p0], obj._p])
-        return (_lk.B_MPLAY, 0, r, p, 0.0, kl, pl, kr, pr, 0, _EMPTY, 0.0, 0.0, 0.0, st.copy(), 0.0,
-                lambda s, x: s.copy())
-    if isinstance(obj, StopPI):
-        return (_lk.B_STOP, 0, obj._r, obj._p, float(obj.p0), 0, _EMPTY, 0, _EMPTY, 0, _EMPTY, 0.0, 0.0, 0.0,
-                st[:-1].copy(), float(st[-1]), lambda s, x: np.concatenate([s, [x]]))
-    return None
-
-
-_NONE_SPEC = (_lk.B_NONE, 0, _EMPTY, _EMPTY, 0.0, 0, _EMPTY, 0, _EMPTY, 0, _EMPTY, 0.0, 0.0, 0.0,
-              np.zeros(1), 0.0, None)
-
-
-def _ss_arrays(sys):
-    s = ct.ss(sys)
-    return (np.ascontiguousarray(s.A, dtype=np.float64).reshape(s.nstates, s.nstates),
-            np.ascontiguousarray(s.B, dtype=np.float64).reshape(s.nstates, 1),
-            np.ascontiguousarray(s.C, dtype=np.float64).reshape(1, s.nstates),
-            np.ascontiguousarray(s.D, dtype=np.float64).reshape(1, 1))
-
-
 def compiled_support(loop):
     """None if :func:`simulate_loop` can run `loop`, else the reason."""
     if _spec(loop.hysteresis, "hysteresis") is None:
@@ -704,7 +653,27 @@ class Comparison:
                 writer.writerow({**extra, **{k: row[k] for k in _FIELDS}})
 
 
-def compare(scenarios, reference, t, engine="auto", progress=None):
+def _run_scenario(loop, t, r, engine, span):
+    """One row of :func:`compare` and its response (module level, so that
+    an executor can run it in another process)."""
+    eng = engine
+    if eng == "auto":
+        eng = "compiled" if compiled_support(loop) is None else "python-control"
+    t0 = time.perf_counter()
+    resp = loop.simulate(t, r, engine=eng)
+    secs = time.perf_counter() - t0
+    y = np.asarray(resp.outputs)[0]
+    e = y - r
+    rms = float(np.sqrt(np.mean(e * e)))
+    mx = float(np.max(np.abs(e)))
+    width = loop_width(r, y)
+    row = dict(scenario=loop.name, label=_LABELS.get(loop.scenario, loop.scenario), engine=eng,
+               rms=rms, max=mx, rms_percent=100 * rms / span, max_percent=100 * mx / span,
+               loop_width=width, loop_width_percent=100 * width / span, seconds=secs)
+    return row, resp
+
+
+def compare(scenarios, reference, t, engine="auto", progress=None, executor=None):
     """Run scenarios on one reference and tabulate their tracking.
 
     Parameters
@@ -720,6 +689,11 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
         kernels, python-control's simulation otherwise.
     progress : callable, optional
         Called as ``progress(done, total, name)`` after each scenario.
+    executor : concurrent.futures.Executor, optional
+        Runs the scenarios in parallel (a ``ProcessPoolExecutor``, or
+        ``distributed.Client(...).get_executor()`` for dask); None runs them
+        one after the other.  The loops and results pickle, and the rows are
+        identical either way (in the scenarios' order).
 
     Returns
     -------
@@ -747,25 +721,26 @@ def compare(scenarios, reference, t, engine="auto", progress=None):
     if t.size != r.size:
         raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
     span = float(r.max() - r.min()) or 1.0
-    rows, responses = [], {}
-    for j, loop in enumerate(loops):
-        eng = engine
-        if eng == "auto":
-            eng = "compiled" if compiled_support(loop) is None else "python-control"
-        t0 = time.perf_counter()
-        resp = loop.simulate(t, r, engine=eng)
-        secs = time.perf_counter() - t0
-        y = np.asarray(resp.outputs)[0]
-        e = y - r
-        rms = float(np.sqrt(np.mean(e * e)))
-        mx = float(np.max(np.abs(e)))
-        width = loop_width(r, y)
-        rows.append(dict(scenario=loop.name, label=_LABELS.get(loop.scenario, loop.scenario), engine=eng,
-                         rms=rms, max=mx, rms_percent=100 * rms / span, max_percent=100 * mx / span,
-                         loop_width=width, loop_width_percent=100 * width / span, seconds=secs))
-        responses[loop.name] = resp
-        if progress is not None:
-            progress(j + 1, len(loops), loop.name)
+    if executor is None:
+        results = []
+        for j, loop in enumerate(loops):
+            results.append(_run_scenario(loop, t, r, engine, span))
+            if progress is not None:
+                progress(j + 1, len(loops), loop.name)
+    else:
+        if not hasattr(executor, "submit"):
+            raise TypeError(f"Parameter executor is {executor!r}; expected a concurrent.futures.Executor "
+                            "(an object with submit()) or None")
+        futures = [executor.submit(_run_scenario, loop, t, r, engine, span) for loop in loops]
+        index = {f: j for j, f in enumerate(futures)}
+        done = 0
+        for f in as_completed(futures):
+            done += 1
+            if progress is not None:
+                progress(done, len(loops), loops[index[f]].name)
+        results = [f.result() for f in futures]
+    rows = [row for row, _ in results]
+    responses = {loop.name: resp for loop, (_, resp) in zip(loops, results)}
     return Comparison(rows, responses, r, t)
 
 

@@ -21,11 +21,16 @@ logger = logging.getLogger(__name__)
 
 
 def _title_and_body(source):
-    """Title from the docstring's first paragraph: the part before its first
+    """Title from the docstring: a first line underlined with "=" (the
+    sphinx-gallery header), else the first paragraph's part before its first
     top-level colon, or its first sentence; the rest becomes the body."""
     import ast
 
     doc = (ast.get_docstring(ast.parse(source)) or "Example").strip()
+    lines = doc.splitlines()
+    if len(lines) >= 2 and lines[1].strip() and set(lines[1].strip()) == {"="}:
+        # sphinx-gallery's header: a title line underlined with "="
+        return lines[0].strip(), "\n".join(lines[2:]).strip()
     first, _, rest = doc.partition("\n\n")
     para = " ".join(line.strip() for line in first.splitlines())
     depth, cut = 0, None
