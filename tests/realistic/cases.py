@@ -132,7 +132,7 @@ def asymmetry_thresholds(seed):
     v = _sines(rng, freqs=(0.5, 1.0))
     y = me.asymmetric_play_core(v, 100.0, skew=rng.uniform(0.6, 0.8))
     return finish("asymmetry_thresholds", seed, np.arange(len(v)) * 1e-3, v, y, {"asymmetry"},
-                  "either", "thresholds grow with the input level: loops wider at the top", rng)
+                  "either", "thresholds grow with the input level: loop width differs top to bottom", rng)
 
 
 @case

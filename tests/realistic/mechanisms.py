@@ -245,7 +245,7 @@ def flag_core(v, span, bias_fraction=0.35, r_fraction=0.08):
 def asymmetric_play_core(v, span, skew, n=200, state=None, return_state=False):
     """Plays whose threshold grows with the input level: r(v) = r (1 + skew v / (span/2)).
 
-    The loop is wider at the top of the stroke than at the bottom (asymmetric hysteresis,
+    The loop's width differs between the top and the bottom of the stroke (asymmetric hysteresis,
     as the GPI of Al Janaideh et al. describes with different rising and falling envelopes).
     Note that a constant difference between rising and falling thresholds would NOT do: a
     play is shift-equivariant, F_r[v - c] = F_r[v] - c, so that is only an offset.
