@@ -130,9 +130,9 @@ def rate_bouc_wen_stage(seed):
 def asymmetry_thresholds(seed):
     rng = _rng(seed, 14)
     v = _sines(rng, freqs=(0.5, 1.0))
-    y = me.asymmetric_play_core(v, 100.0, skew=rng.uniform(0.35, 0.5))
+    y = me.asymmetric_play_core(v, 100.0, skew=rng.uniform(0.6, 0.8))
     return finish("asymmetry_thresholds", seed, np.arange(len(v)) * 1e-3, v, y, {"asymmetry"},
-                  "either", "rising and falling thresholds differ", rng)
+                  "either", "thresholds grow with the input level: loop width differs top to bottom", rng)
 
 
 @case
@@ -228,7 +228,7 @@ def initial_state_preload(seed):
 def pair_asymmetry_creep(seed):
     rng = _rng(seed, 30)
     v = _stairs(rng)
-    h = me.asymmetric_play_core(v, 100.0, skew=0.45)
+    h = me.asymmetric_play_core(v, 100.0, skew=0.7)
     y = h + me.kelvin_voigt_creep(h, 1e-3, np.array([0.025, 0.02]), [0.3, 2.0])
     return finish("pair_asymmetry_creep", seed, np.arange(len(v)) * 1e-3, v, y, {"asymmetry", "creep"},
                   "either", "asymmetric core with Kelvin-Voigt creep", rng, monitor_noise=5e-4)
@@ -249,7 +249,7 @@ def pair_saturation_drift(seed):
 def pair_delay_asymmetry(seed):
     rng = _rng(seed, 32)
     v = _sines(rng, freqs=(1.0, 4.0))
-    y = me.asymmetric_play_core(me.fractional_delay(v, 3.3), 100.0, skew=0.45)
+    y = me.asymmetric_play_core(me.fractional_delay(v, 3.3), 100.0, skew=0.7)
     return finish("pair_delay_asymmetry", seed, np.arange(len(v)) * 1e-3, v, y, {"delay", "asymmetry"},
                   "either", "dead time before an asymmetric core", rng)
 

@@ -143,6 +143,6 @@ def pair_gain_drift_asymmetry(seed):
     rng = _rng(seed, 12)
     v = ex.decaying_sines(1e-3, 20_000, (0.5, 1.0), 48.0)
     t = np.arange(len(v)) * 1e-3
-    y = me.asymmetric_play_core(v, 100.0, skew=0.4) * me.thermal_gain(t, 0.08, 5.0)
+    y = me.asymmetric_play_core(v, 100.0, skew=0.7) * me.thermal_gain(t, 0.08, 5.0)
     return finish("holdout_pair_gain_drift_asymmetry", seed, t, v, y, {"gain_drift", "asymmetry"},
                   "either", "asymmetric core whose gain rises as it warms", rng)

@@ -243,18 +243,21 @@ def flag_core(v, span, bias_fraction=0.35, r_fraction=0.08):
 
 
 def asymmetric_play_core(v, span, skew, n=200, state=None, return_state=False):
-    """Plays whose rising and falling thresholds differ: r_up = r (1 + skew), r_down = r (1 - skew).
+    """Plays whose threshold grows with the input level: r(v) = r (1 + skew v / (span/2)).
 
-    The loop opens differently on rising and falling branches (asymmetric hysteresis, as in
-    piezo stacks driven far from zero); skew = 0 is :func:`play_core`.
+    The loop's width differs between the top and the bottom of the stroke (asymmetric hysteresis,
+    as the GPI of Al Janaideh et al. describes with different rising and falling envelopes).
+    Note that a constant difference between rising and falling thresholds would NOT do: a
+    play is shift-equivariant, F_r[v - c] = F_r[v] - c, so that is only an offset.
+    ``skew = 0`` is :func:`play_core`; thresholds are kept >= 0.1 r.
     """
     v = np.asarray(v, float)
     r, w = _density_thresholds(span, n)
     w = w / w.sum()
-    ru, rd = r * (1 + skew), r * (1 - skew)
     z = np.zeros_like(r) if state is None else np.array(state, float)
     y = np.empty_like(v)
     for k, vk in enumerate(v):
-        z = np.minimum(np.maximum(z, vk - ru), vk + rd)
+        rk = r * max(1 + skew * vk / (span / 2), 0.1)
+        z = np.minimum(np.maximum(z, vk - rk), vk + rk)
         y[k] = 0.35 * vk + 0.65 * (w @ z)
     return (y, z) if return_state else y
