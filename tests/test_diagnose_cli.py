@@ -48,7 +48,8 @@ def test_json_schema(drift_csv, capsys, tmp_path):
     assert js["rms_after_pct"] == pytest.approx(100 * js["rms_after"] / js["output_span"])
     assert isinstance(js["untested"], dict) and js["stopped"]
     s = js["steps"][0]
-    assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence"]
+    assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence", "dropped"]
+    assert s["dropped"] is False and isinstance(js["revisions"], list)
     assert s["effect"] == "drift"
     sig = s["evidence"]["signature"]
     assert sig["present"] and sig["statistic"] > sig["threshold"]

@@ -43,7 +43,12 @@ class Diagnosis:
         One per added effect: ``effect``, ``rms_before``, ``rms_after``,
         ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
         output span), ``evidence`` (the signature test, the extension and its
-        parameters, gain and BIC change, every candidate's held-out RMS).
+        parameters, gain and BIC change, every candidate's held-out RMS) and
+        ``dropped`` (True when a later effect made it redundant).
+    revisions : list of dict
+        Changes of the final pass over the chosen effects: a near-tie part
+        replaced by another effect's (``replaced``, ``by``), or a redundant
+        one dropped (``by`` None), with the held-out RMS before and after.
     untested : dict
         Effects the data cannot show, with the reason.
     stopped : str
@@ -83,7 +88,7 @@ class Diagnosis:
         """
         steps = [{"effect": s["effect"], "rms_before": s["rms_before"], "rms_after": s["rms_after"],
                   "rms_before_pct": self._pct(s["rms_before"]), "rms_after_pct": self._pct(s["rms_after"]),
-                  "evidence": s["evidence"]} for s in self.steps]
+                  "evidence": s["evidence"], "dropped": bool(s.get("dropped", False))} for s in self.steps]
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
             "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
@@ -92,6 +97,7 @@ class Diagnosis:
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
             "validation": list(self.validation), "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
+            "revisions": list(getattr(self, "revisions", [])),
             "model": self.model.describe(),
             "final_signatures": {k: {kk: v[kk] for kk in ("statistic", "threshold", "present", "testable")}
                                  for k, v in self.final_evidence.items()}})
@@ -124,6 +130,10 @@ class Diagnosis:
             lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+        for rv in getattr(self, "revisions", []):
+            what = f"replaced by {rv['by']} ({rv['effect_after']})" if rv["by"] else "dropped"
+            lines.append(f"revision: step {rv['step']}'s {rv['replaced']} {what}: held-out RMS {rv['rms_before']:.4g} "
+                         f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}; held-out RMS "
@@ -213,6 +223,8 @@ class Diagnosis:
         # residual before and after each step, noise floor drawn
         preds = self._step_preds
         labels = ["base PI"] + [f"+ {st['effect']}" for st in self.steps]
+        if len(preds) > len(labels):
+            labels.append("final: " + " + ".join(["PI"] + list(self.effects)) + " (after revision)")
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)

@@ -18,6 +18,9 @@ TIMED = ("rate_dependence", "creep", "drift", "gain_drift", "delay")
 MIN_GAIN = 0.25
 #: ... and remove at least this share of the mean square left above the noise floor
 MIN_SHARE = 0.35
+#: ... or at least this share when it also removes OWN_DROP of its own signature
+MIN_SHARE_OWN = 0.1
+OWN_DROP = 1.0 / 3.0
 #: "explained": held-out RMS at most this many noise floors
 EXPLAINED = 1.5
 #: lag-1 autocorrelation above which the final residual is not taken for white noise
@@ -80,7 +83,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         say(f"{k}: {why}")
     candidates = [cls for cls in PARTS.values() if cls.effect in effects and cls.effect not in untested
                   and not (cls.needs_time and rec.dt is None)]
-    steps, chosen = [], []
+    steps, chosen, chosen_kinds, step_trials = [], [], [], []
     step_preds = [cur.prediction]
     stopped = "no candidate effect to try"
     ev = first_ev
@@ -89,6 +92,8 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         trials = {}
         for cls in candidates:
             if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
+                continue
+            if getattr(cls, "needs_output_map", False) and struct.output_part() is None:
                 continue
             part = cls()
             part.prepare(rec.y, ctx)
@@ -103,7 +108,12 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
             starts = [{part.kind: s} for s in part.initial_values(ctx, kinds)]
             k_new = len(part.parameters(ctx, kinds))
             try:
-                pt = vp.optimise(st, start, free={part.kind}, max_evaluations=12 * k_new, starts=starts)
+                free = {part.kind}
+                if part.slot == "after_output":
+                    # a term after the output map moves the map's operating point: refit both
+                    free.add(st.output_part().kind)
+                    k_new += len(st.output_part().parameters(ctx, kinds))
+                pt = vp.optimise(st, start, free=free, max_evaluations=12 * k_new, starts=starts)
             except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
                 say(f"step {len(chosen) + 1}: {part.kind}: failed ({exc})")
                 continue
@@ -125,7 +135,21 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         # (d) it removes at least MIN_SHARE of the structure left above the noise
         # (an out-of-vocabulary misfit is only nibbled at by every part)
         excess = max(cur_val ** 2 - sigma ** 2, 1e-300) / sigma ** 2
-        ok = [j for j in judged if j[0] >= MIN_GAIN and j[2] < 0 and j[3] and j[0] >= MIN_SHARE * excess]
+        ok = []
+        for j in judged:
+            if not (j[0] >= MIN_GAIN and j[2] < 0 and j[3]):
+                continue
+            if j[0] >= MIN_SHARE * excess:
+                ok.append(j)
+            elif j[0] >= MIN_SHARE_OWN * excess:
+                # a smaller share of a residual that holds more than one misfit: the
+                # part must then remove a good part of its own signature
+                part, _, pt, _ = trials[j[1]]
+                before = _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["statistic"]
+                after_ev = _evidence(rec, rec.y - pt.prediction, pt.prediction, sigma)
+                after = _signature_of(part, after_ev, rec, rec.y - pt.prediction, pt.prediction, sigma)["statistic"]
+                if before > 0 and after <= (1.0 - OWN_DROP) * before:
+                    ok.append(j)
         if not ok:
             g, kind, dbic, sig_ok = judged[0]
             part = trials[kind][0]
@@ -138,7 +162,8 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 why.append("its signature is absent from the residual")
             if g < MIN_SHARE * excess:
                 why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
-                           f"(needs {100 * MIN_SHARE:.0f} %)")
+                           f"(needs {100 * MIN_SHARE:.0f} %, or {100 * MIN_SHARE_OWN:.0f} % and a third of "
+                           "its own signature)")
             stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
             say(stopped)
             break
@@ -148,7 +173,8 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
         n_par = len(st.parameters(ctx))
         if n_par > len(part.parameters(ctx, set(st.kinds))):
             joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
-            if joint.rss < pt.rss:
+            # kept when it fits the training part better without losing on the held-out part
+            if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
                 pt = joint
         rv = rms_val(pt)
         ext = PartsModel(st, pt.values, pt.theta, ctx, pt.names).describe()
@@ -160,6 +186,8 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                       "rms_before_pct": 100.0 * cur_val / rec.y_span, "rms_after_pct": 100.0 * rv / rec.y_span,
                       "evidence": step_ev})
         chosen.append(part.effect)
+        chosen_kinds.append(part.kind)
+        step_trials.append({k: tr[3] for k, tr in trials.items()})
         say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rv:.4g}")
         struct, cur = st, pt
         step_preds.append(pt.prediction)
@@ -170,6 +198,13 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
     else:
         if candidates and len(chosen) >= max_effects:
             stopped = f"max_effects = {max_effects} reached"
+    if len(chosen) >= 2:
+        struct, cur, revisions = _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
+                                         sigma, rms_val, say)
+        if revisions:
+            step_preds.append(cur.prediction)
+    else:
+        revisions = []
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     sgn = rec.output_sign
     model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn)
@@ -201,6 +236,114 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
                             else (rec.k_val, rec.n - 1)),
-                first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
+                revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
+
+
+#: an alternative whose held-out mean square at its step was within this share of
+#: the chosen part's gain (or MIN_GAIN noise variances) is a near tie, retried at the end
+TIE = 0.1
+#: revised fits within this many noise variances (held-out mean square) of the
+#: best are equally good: the one with the fewest nonlinear parameters is kept
+PARSIMONY = 0.05
+
+
+def _refit(vp, ctx, st, start, rms_val, new=None, starts=()):
+    """Fit `st` from `start`: the new part's parameters first (from its
+    starting points), then every nonlinear parameter jointly."""
+    if new is not None:
+        pt = vp.optimise(st, start, free={new.kind}, max_evaluations=12 * max(len(new.parameters(ctx, set(st.kinds))), 1),
+                         starts=list(starts))
+        start = pt.values
+    else:
+        pt = vp.evaluate(st, start)
+    n_par = len(st.parameters(ctx))
+    if n_par:
+        joint = vp.optimise(st, start, free=None, max_evaluations=10 * n_par)
+        if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
+            pt = joint
+    return pt
+
+
+def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say):
+    """Revisit the effects chosen greedily once all are in (a floating
+    search): a part whose step was a near tie with another effect's part is
+    replaced by it when that lowers the held-out RMS with the later effects in
+    the model; then a part whose removal raises the held-out mean square by
+    less than MIN_GAIN noise variances is dropped (a later effect made it
+    redundant).  Returns the structure, the fit point and the revisions."""
+    revisions = []
+    s2 = sigma ** 2
+    for j in range(len(chosen_kinds)):
+        kind = chosen_kinds[j]
+        trials = step_trials[j]
+        gain = steps[j]["rms_before"] ** 2 - trials[kind] ** 2
+        margin = max(TIE * gain, MIN_GAIN * s2)
+        alts = sorted((r, k) for k, r in trials.items()
+                      if k != kind and r ** 2 - trials[kind] ** 2 <= margin
+                      and (PARTS[k].effect == chosen[j] or PARTS[k].effect not in chosen))
+        tried = [(kind, struct, cur)]
+        for _, alt in alts:
+            cls = PARTS[alt]
+            if cls.slot == "output" and any(p.slot == "output" and p.kind != kind for p in struct.parts):
+                continue
+            part = cls()
+            part.prepare(rec.y, ctx)
+            keep = [p for p in struct.parts if p.kind != kind]
+            part.attach(PartsModel(Structure(keep), cur.values, cur.theta, ctx, cur.names))
+            st = Structure(keep + [part])
+            start = {k: dict(v) for k, v in cur.values.items() if k != kind}
+            start[alt] = {q.name: q.initial for q in part.parameters(ctx, set(st.kinds))}
+            for p, q in st.parameters(ctx):
+                start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
+            try:
+                pt = _refit(vp, ctx, st, start, rms_val, part, [{alt: v} for v in part.initial_values(ctx, set(st.kinds))])
+            except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+                continue
+            say(f"revise: {kind} -> {alt}: held-out RMS {rms_val(cur):.4g} -> {rms_val(pt):.4g}")
+            tried.append((alt, st, pt))
+        # the best fit; among fits within PARSIMONY noise variances of it, the
+        # part with the fewest nonlinear parameters (the current one on a tie)
+        lowest = min(rms_val(p_) ** 2 for _, _, p_ in tried)
+        close = [c for c in tried if rms_val(c[2]) ** 2 <= lowest + PARSIMONY * s2]
+        best = min(close, key=lambda c: (len(PARTS[c[0]]().parameters(ctx, set(c[1].kinds))), c[0] != kind,
+                                         rms_val(c[2])))
+        if best[0] != kind:
+            alt, st, pt = best
+            cls = PARTS[alt]
+            revisions.append({"step": j + 1, "replaced": kind, "by": alt, "effect_before": chosen[j],
+                              "effect_after": cls.effect, "rms_before": rms_val(cur), "rms_after": rms_val(pt),
+                              "reason": "near tie at its step; the other part fits better with the later "
+                                        "effects in the model"})
+            steps[j]["effect"] = cls.effect
+            steps[j]["evidence"]["revised"] = revisions[-1]
+            chosen[j], chosen_kinds[j] = cls.effect, alt
+            struct, cur = st, pt
+    # backward: drop what a later effect made redundant
+    j = 0
+    while j < len(chosen_kinds) and len(chosen_kinds) > 1:
+        kind = chosen_kinds[j]
+        keep = [p for p in struct.parts if p.kind != kind]
+        st = Structure(keep)
+        start = {k: dict(v) for k, v in cur.values.items() if k != kind}
+        try:
+            pt = _refit(vp, ctx, st, start, rms_val)
+        except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+            j += 1
+            continue
+        before, after = rms_val(cur), rms_val(pt)
+        if after ** 2 - before ** 2 < MIN_GAIN * s2:
+            say(f"revise: {chosen[j]} ({kind}) dropped: without it the held-out RMS is {after:.4g} "
+                f"(with it {before:.4g})")
+            revisions.append({"step": j + 1, "replaced": kind, "by": None, "effect_before": chosen[j],
+                              "effect_after": None, "rms_before": before, "rms_after": after,
+                              "reason": f"redundant once the later effects are in: it lowers the held-out mean "
+                                        f"square by less than {MIN_GAIN} noise variances"})
+            steps[j]["evidence"]["revised"] = revisions[-1]
+            steps[j]["dropped"] = True
+            del chosen[j], chosen_kinds[j]
+            struct, cur = st, pt
+        else:
+            j += 1
+    return struct, cur, revisions

@@ -28,7 +28,7 @@ def _env(s, q, b):
 
 
 @njit(cache=True)
-def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0):
+def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
 
     x : input (scaled), r : thresholds (scaled, r[0] may be 0), beta : rate
@@ -36,15 +36,18 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
     0), preload : inputs applied at rest (rate 0) before the first sample,
     starting from the virgin state ``w = 0``.  shift : the plays with
     ``r_i > 0`` see ``x - shift`` (thresholds ``r_i + shift`` rising and
-    ``r_i - shift`` falling: asymmetric thresholds).
+    ``r_i - shift`` falling: asymmetric thresholds).  level : thresholds
+    that grow with the input level, ``r_i max(1 + level x, 0.05)`` (a loop
+    wider at one end of the stroke than at the other).
     """
     N = r.size
     w = np.zeros(N)
     for k in range(preload.size):
         for i in range(N):
             xk = preload[k] - shift if r[i] > 0.0 else preload[k]
-            lo = rho * _env(xk - r[i], ql, bl)
-            hi = _env(xk + r[i], qr, br)
+            ri = r[i] * max(1.0 + level * preload[k], 0.05)
+            lo = rho * _env(xk - ri, ql, bl)
+            hi = _env(xk + ri, qr, br)
             wi = w[i]
             if wi > hi:
                 wi = hi
@@ -56,8 +59,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
         xk = x[k]
         extra = beta * abs(xk - prev) * inv_dt if beta != 0.0 else 0.0
         prev = xk
+        grow = max(1.0 + level * xk, 0.05)
         for i in range(N):
-            ri = r[i] + extra if r[i] > 0.0 else 0.0
+            ri = r[i] * grow + extra if r[i] > 0.0 else 0.0
             xi = xk - shift if r[i] > 0.0 else xk
             lo = rho * _env(xi - ri, ql, bl)
             hi = _env(xi + ri, qr, br)

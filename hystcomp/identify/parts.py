@@ -44,9 +44,9 @@ import numpy as np
 from ..effects import LinearStage, lag_bank
 from ._part_kernels import core_columns, fractional_delay
 
-__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds",
+__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep",
-           "Drift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh", "register", "PARTS"]
+           "Drift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh", "register", "PARTS"]
 
 Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log"])
 Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds and
@@ -58,7 +58,7 @@ Examples
 True
 """
 
-SLOTS = ("input", "core", "filter", "additive", "output")
+SLOTS = ("input", "core", "filter", "additive", "output", "after_output")
 
 
 class Context:
@@ -209,6 +209,11 @@ class Part:
         """``output`` slot: the output for the linear prediction `u`."""
         return u
 
+    def after_output(self, values, ctx):
+        """``after_output`` slot: a term added after the output map (from
+        nonlinear parameters only), shape (n,)."""
+        raise NotImplementedError
+
     def describe(self, values):
         """Readable parameters (dict)."""
         return {"part": self.description, **{k: float(f"{v:.6g}") for k, v in values.items()}}
@@ -278,7 +283,8 @@ class PICore(Part):
             pre = np.append(pre, x[0] if x.size else 0.0)
         core_columns(np.ascontiguousarray(x), ctx.thresholds, beta, inv_dt, float(options.get("rho", 1.0)),
                      float(options.get("ql", 0.0)), float(options.get("qr", 0.0)), float(options.get("bl", 0.0)),
-                     float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)))
+                     float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)),
+                     float(options.get("level", 0.0)))
         return out
 
 
@@ -462,6 +468,40 @@ class Asymmetry(Part):
 
 
 @register
+class LevelThresholds(Part):
+    """Thresholds that grow (or shrink) with the input level,
+    ``r_i max(1 + k x, 0.05)`` with ``x`` the scaled input (``|x| <= 1``):
+    the loop is wider at one end of the stroke than at the other, an
+    asymmetry that envelopes shared by all plays do not draw.  It is the
+    static counterpart of the rate-dependent thresholds ``r_i + beta
+    |dv/dt|`` of Al Janaideh et al. (2009), and a generalized play (eq. 23)
+    whose envelope slopes ``1 -/+ k r_i`` depend on the threshold.
+
+    Examples
+    --------
+    >>> opts = {}
+    >>> LevelThresholds().core_options({"level_coefficient": 0.3}, None, opts)
+    >>> opts["level"]
+    0.3
+    """
+
+    effect = "asymmetry"
+    kind = "level_thresholds"
+    slot = "core"
+    order = 35
+    description = "thresholds growing with the input level r_i (1 + k x)"
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("level_coefficient", 0.0, -0.9, 0.9, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"level_coefficient": k} for k in (-0.4, -0.15, 0.15, 0.4)]
+
+    def core_options(self, values, ctx, options):
+        options["level"] = values["level_coefficient"]
+
+
+@register
 class Saturation(Part):
     """Saturating envelope ``gamma(s) = tanh(b s)/b`` (eq. 25) on both sides
     of the plays (scaled input).
@@ -617,13 +657,16 @@ class OutputResonance(Part):
 
 @register
 class GainDrift(Part):
-    """A gain that changes linearly over the record:
-    ``(1 + g (t/T - 1/2))`` times the hysteresis.
+    """A gain that changes over the record, ``(1 + g (s(t) - 1/2))`` times
+    the hysteresis, with ``s(t) = (1 - exp(-t/tau)) / (1 - exp(-T/tau))``
+    rising from 0 to 1 over the record: an exponential approach (an
+    actuator warming up with time constant tau [s]), linear in time for
+    tau >> T.
 
     Examples
     --------
     >>> ctx = Context(np.zeros(3), 1.0, 0.0, 1.0, 2.0)
-    >>> GainDrift().filter(np.ones((3, 1)), {"g": 0.2}, ctx).ravel().round(6).tolist()
+    >>> GainDrift().filter(np.ones((3, 1)), {"g": 0.2, "time_constant": 1e6}, ctx).ravel().round(6).tolist()
     [0.9, 1.0, 1.1]
     """
 
@@ -632,16 +675,21 @@ class GainDrift(Part):
     slot = "filter"
     order = 90
     needs_time = True
-    description = "gain changing linearly in time"
+    description = "gain changing in time 1 + g (s(t) - 1/2), s rising 0 -> 1 with time constant tau"
 
     def parameters(self, ctx, kinds):
-        return [Parameter("g", 0.0, -0.6, 0.6, False)]
+        T = ctx.duration
+        return [Parameter("g", 0.0, -0.6, 0.6, False),
+                Parameter("time_constant", 3.0 * T, 0.02 * T, 20.0 * T, True)]
 
     def initial_values(self, ctx, kinds):
-        return [{"g": g} for g in (-0.1, 0.1)]
+        T = ctx.duration
+        return [{"g": g, "time_constant": f * T} for g in (-0.1, 0.1) for f in (0.1, 0.3, 20.0)]
 
     def filter(self, columns, values, ctx):
-        return columns * (1.0 + values["g"] * (ctx.time / ctx.duration - 0.5))[:, None]
+        tau = values.get("time_constant", 1e6 * ctx.duration)
+        s = np.expm1(-ctx.time / tau) / np.expm1(-ctx.duration / tau)
+        return columns * (1.0 + values["g"] * (s - 0.5))[:, None]
 
 
 # ----------------------------------------------------------------------------
@@ -788,6 +836,67 @@ class Drift(Part):
         return D, np.full(2, -np.inf), np.full(2, np.inf), ["drift_linear", "drift_exponential"]
 
 
+@register
+class SensorDrift(Part):
+    """Offset drift added after a saturating output map (a displacement
+    sensor or a fixture warming up, outside the actuator):
+    ``y = map(u) + a t/T + b (1 - exp(-t/tau))``.  Tried only when the model
+    has an output map (without one it is :class:`Drift`); its amplitudes are
+    nonlinear parameters (in output spans) because the map is.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), 1.0, 0.0, 1.0, 3.0)
+    >>> part = SensorDrift(); part.y_span = 2.0
+    >>> part.after_output({"linear": 0.5, "exponential": 0.0, "time_constant": 1.0}, ctx).tolist()
+    [0.0, 0.3333333333333333, 0.6666666666666666]
+    """
+
+    effect = "drift"
+    kind = "sensor_drift"
+    slot = "after_output"
+    needs_time = True
+    needs_output_map = True
+    description = "offset drift after the output map a t + b (1 - exp(-t/tau))"
+
+    def __init__(self):
+        self.y_span = 1.0
+        self.driver = None
+
+    def prepare(self, y, ctx):
+        self.y_span = float(np.ptp(y)) or 1.0
+        self._y = np.asarray(y, dtype=np.float64)
+
+    def attach(self, model):
+        self.driver = model
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("linear", 0.0, -0.5, 0.5, False), Parameter("exponential", 0.0, -0.5, 0.5, False),
+                Parameter("time_constant", 0.3 * ctx.duration, 0.02 * ctx.duration, 3 * ctx.duration, True)]
+
+    def initial_values(self, ctx, kinds):
+        # amplitudes from a least-squares fit of the current residual's trend
+        out = []
+        e = None
+        if self.driver is not None and getattr(self, "_y", None) is not None and self._y.size == ctx.n:
+            e = self._y - self.driver.simulate(ctx.v)
+        for f in (0.05, 0.2, 0.8):
+            tau = f * ctx.duration
+            a = b = 0.0
+            if e is not None:
+                t = ctx.time
+                D = np.column_stack([t / ctx.duration, -np.expm1(-t / tau), np.ones(ctx.n)])
+                coef = np.linalg.lstsq(D, e, rcond=None)[0]
+                a, b = (float(np.clip(c / self.y_span, -0.5, 0.5)) for c in coef[:2])
+            out.append({"linear": a, "exponential": b, "time_constant": tau})
+        return out
+
+    def after_output(self, values, ctx):
+        t = ctx.time
+        return self.y_span * (values["linear"] * t / ctx.duration
+                              - values["exponential"] * np.expm1(-t / values["time_constant"]))
+
+
 # ----------------------------------------------------------------------------
 # output side
 # ----------------------------------------------------------------------------
@@ -920,6 +1029,11 @@ class OutputTanh(Part):
     def output(self, u, values, ctx):
         c, S = self._map(values)
         return c + S * np.tanh((u - c) / S)
+
+    def output_slope(self, u, values, ctx):
+        """d output / d u (for the Gauss-Newton refinement of the weights)."""
+        c, S = self._map(values)
+        return 1.0 - np.tanh((u - c) / S) ** 2
 
     def describe(self, values):
         c, S = self._map(values)

@@ -89,16 +89,17 @@ class _WeightQP:
         return self.x.value, self.problem.status, ""
 
 
-def _split_gram(G, b, free):
+def _split_gram(G, b, free, rcond=1e-13):
     """R, d with R^T R = G and R^T d = b on the free columns (eigen
-    factorisation: robust when G is singular)."""
+    factorisation: robust when G is singular; eigenvalues below
+    ``rcond * m * max`` are dropped)."""
     m = G.shape[0]
     R = np.zeros((m, m))
     d = np.zeros(m)
     idx = np.flatnonzero(free)
     Gf = G[np.ix_(idx, idx)]
     lam, U = np.linalg.eigh(0.5 * (Gf + Gf.T))
-    tol = max(lam.max(), 0.0) * m * 1e-13
+    tol = max(lam.max(), 0.0) * m * rcond
     pos = lam > tol
     sq = np.sqrt(lam[pos])
     Rf = sq[:, None] * U[:, pos].T
