@@ -897,9 +897,6 @@ class SensorDrift(Part):
                               - values["exponential"] * np.expm1(-t / values["time_constant"]))
 
 
-#: the kinds of the asymmetry effect (an output map may then be off-centre)
-ASYMMETRY_KINDS = {"asymmetric_envelopes", "level_thresholds", "output_quadratic"}
-
 # ----------------------------------------------------------------------------
 # output side
 # ----------------------------------------------------------------------------
@@ -970,9 +967,7 @@ class OutputClip(Part):
 class OutputTanh(Part):
     """Smooth saturation on the output side (a magnetisation-like output,
     an amplifier running into its rails):
-    ``y = c + S tanh((u - c)/S)`` for the linear prediction u, centred on
-    the output's mid-range (symmetric saturation; the centre ``c`` moves only
-    when an asymmetry part is in the model: asymmetric saturation).  The linear
+    ``y = c + S tanh((u - c)/S)`` for the linear prediction u.  The linear
     solve fits ``u`` to ``c + S atanh((y - c)/S)`` on the samples inside
     98 % of the limits, weighted by ``(1 - ((y - c)/S)^2)^2`` (the slope of
     the map squared, so that the weighted residual is the output's residual
@@ -1012,22 +1007,15 @@ class OutputTanh(Part):
 
     def _map(self, values):
         half = 0.5 * (self.y_max - self.y_min) or 1.0
-        c = 0.5 * (self.y_max + self.y_min) + values.get("centre", 0.0) * half
+        c = 0.5 * (self.y_max + self.y_min) + values["centre"] * half
         S = values["limit"] * half
         return c, S
 
     def parameters(self, ctx, kinds):
-        ps = [Parameter("limit", 1.5, 1.02, 20.0, True)]
-        if set(kinds) & (ASYMMETRY_KINDS | {"sensor_drift"}):
-            # saturation at different distances above and below the output's
-            # mid-range: an asymmetric saturation, only together with the asymmetry
-            # effect, or a drift after the map (which moves the measured mid-range)
-            ps.append(Parameter("centre", 0.0, -0.3, 0.3, False))
-        return ps
+        return [Parameter("limit", 1.5, 1.02, 20.0, True), Parameter("centre", 0.0, -0.3, 0.3, False)]
 
     def initial_values(self, ctx, kinds):
-        extra = {"centre": 0.0} if set(kinds) & (ASYMMETRY_KINDS | {"sensor_drift"}) else {}
-        return [{"limit": L, **extra} for L in (1.05, 1.15, 1.4, 2.0, 4.0)]
+        return [{"limit": L, "centre": 0.0} for L in (1.05, 1.15, 1.4, 2.0, 4.0)]
 
     def fit_rows(self, y, values, ctx):
         c, S = self._map(values)
