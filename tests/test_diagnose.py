@@ -300,3 +300,15 @@ def test_creep_on_an_asymmetric_actuator_both_named():
     y = a.y + 0.06 * np.ptp(a.clean) * (X @ [0.5, 0.5] - a.v)
     rep = diagnose(a.t, a.v, y, progress=False)
     assert set(rep.effects[:2]) == {"asymmetry", "creep"}, rep.report()
+
+
+def test_evidence_only_one_effect_equals_the_full_evidence():
+    from hystcomp.diagnose.record import Record
+    from hystcomp.diagnose.signatures import evidence as signatures
+
+    d = hidden_effect_data("creep", seed=1, dt=DT)
+    rec = Record(d.t, d.v, d.y, 0.3)
+    e = rec.y - np.polyval(np.polyfit(rec.v, rec.y, 1), rec.v)
+    full = signatures(rec, e, rec.y - e, 0.01)
+    for k in full:
+        assert signatures(rec, e, rec.y - e, 0.01, only=k)[k] == full[k]

@@ -146,7 +146,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 # part must then remove a good part of its own signature
                 part, _, pt, _ = trials[j[1]]
                 before = _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["statistic"]
-                after_ev = _evidence(rec, rec.y - pt.prediction, pt.prediction, sigma)
+                after_ev = _evidence(rec, rec.y - pt.prediction, pt.prediction, sigma, only=part.effect)
                 after = _signature_of(part, after_ev, rec, rec.y - pt.prediction, pt.prediction, sigma)["statistic"]
                 if before > 0 and after <= (1.0 - OWN_DROP) * before:
                     ok.append(j)

@@ -49,7 +49,7 @@ def _static_nuisance(rec, bins=12):
     return np.column_stack([H * up, H * ~up])
 
 
-def evidence(rec, e, pred, sigma):
+def evidence(rec, e, pred, sigma, only=None):
     """Every effect's signature test on the residual `e` (all samples).
 
     Parameters
@@ -62,6 +62,8 @@ def evidence(rec, e, pred, sigma):
         The model's prediction.
     sigma : float
         Noise floor.
+    only : str, optional
+        Compute this effect's test only (the others are skipped).
 
     Returns
     -------
@@ -74,6 +76,8 @@ def evidence(rec, e, pred, sigma):
     one = np.ones((n, 1))
     N = _static_nuisance(rec)
     timed = rec.dt is not None
+    c = 0.5 * (rec.vmin + rec.vmax)
+    xc = (rec.v - c) / (0.5 * rec.span)
 
     def put(name, signature, stat, thr, testable=True, reading="", **extra):
         stat = float(stat)
@@ -82,127 +86,132 @@ def evidence(rec, e, pred, sigma):
                     "present": present, "testable": bool(testable), "where": WHERE[name],
                     "reading": reading or (("present: " if present else "absent: ") + signature), **extra}
 
-    # -- rate dependence: residual against the input rate beyond static branch functions
-    sig = "residual against the input rate |dv/dt| beyond static functions of the input on each branch"
-    if not timed:
-        put("rate_dependence", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
-    elif rec.peak_share >= 0.9:
-        put("rate_dependence", sig, 0.0, PARTIAL, False,
-            f"untested: {100 * rec.peak_share:.0f} % of the input's power lies within a factor 1.5 of "
-            f"{rec.f_peak:.3g} Hz; at one rate of excitation rate dependence cannot be told from the loop's "
-            "shape (add sines at other frequencies)")
-    else:
-        r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)
-        F = np.column_stack([r, r * np.abs(r), np.gradient(r)])
-        put("rate_dependence", sig, _partial(e, N, F) / sigma, PARTIAL)
-
-    # -- delay: residual along the derivative of the prediction
-    sig = "residual along the model output's time derivative (a shift in time)"
-    if not timed:
-        put("delay", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
-    else:
-        dp = np.gradient(pred)
-        dp = dp / (np.max(np.abs(dp)) or 1.0)
-        lag = _xcorr_lag(e, dp, max_lag=max(3, min(200, n // 50)))
-        put("delay", sig, _partial(e, N, dp[:, None]) / sigma, PARTIAL, lag_samples=lag)
-
-    # -- creep: relaxation during holds in the direction of the step into them
-    sig = "residual change during each hold against the sign of the step into it (either direction)"
-    moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
-    n_up = sum(1 for _, _, s in moved if s > 0)
-    n_dn = sum(1 for _, _, s in moved if s < 0)
-    if not timed:
-        put("creep", sig, 0.0, 0.3, False, "untested: the record has no time axis")
-    elif n_up < 1 or n_dn < 1 or len(moved) < 3:
-        put("creep", sig, 0.0, 0.3, False,
-            "untested: the input is held still after steps in both directions too rarely "
-            "(need at least 3 holds, after up and down steps)", holds=len(moved))
-    else:
-        rows = []
-        for k, j, s in moved:
-            m = max(2, (j - k) // 5)
-            rows.append((math.copysign(1.0, s), float(e[j - m:j].mean() - e[k:k + m].mean()), (j - k) * rec.dt))
-        R = np.array(rows)
-        X = np.column_stack([R[:, 0], R[:, 2] / R[:, 2].mean()])
-        coef, *_ = np.linalg.lstsq(X, R[:, 1], rcond=None)
-        res = R[:, 1] - X @ coef
-        dof = max(R.shape[0] - 2, 1)
-        se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
-        # the relaxation (in either direction: creep on, or relaxing back) must
-        # exceed 0.3 noise floors and 2.5 standard errors
-        stat = abs(float(coef[0])) / sigma
-        thr = max(0.3, 2.5 * se / sigma)
-        put("creep", sig, stat, round(thr, 4), holds=len(moved))
-
-    # -- drift / gain drift: slow trend in time beyond static functions of the input
-    sig = "residual's slow trend in time (t, t^2) beyond static functions of the input"
-    sig_g = "residual along t times the model output (a gain changing in time)"
-    if not timed:
-        put("drift", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
-        put("gain_drift", sig_g, 0.0, PARTIAL, False, "untested: the record has no time axis")
-    else:
-        tn = np.arange(n) / (n - 1) - 0.5
-        T = np.column_stack([tn, tn ** 2 - 1.0 / 12.0])
-        put("drift", sig, _partial(e, N, T) / sigma, PARTIAL)
-        pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
-        put("gain_drift", sig_g, _partial(e, np.column_stack([N, T]), (tn * pc)[:, None]) / sigma, PARTIAL)
-
-    # -- asymmetry and saturation: even and odd bends against the input
-    c = 0.5 * (rec.vmin + rec.vmax)
-    xc = (rec.v - c) / (0.5 * rec.span)
-    s = rec.direction
-    N1 = np.column_stack([one, xc])
-    # a point-symmetric loop (what a PI model draws) leaves residuals odd under
-    # (v, dv/dt) -> (-v, -dv/dt); asymmetry leaves an even part
-    put("asymmetry", "residual against functions of the input even under (v, dv/dt) -> (-v, -dv/dt) "
-        "(v^2, sign(dv/dt) v^2, |v|, sign(dv/dt) v)",
-        _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc])) / sigma, PARTIAL)
-    put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
-        _partial(e, N1, np.column_stack([xc ** 3, xc ** 5])) / sigma, PARTIAL)
-
-    # -- output saturation: the output stays flat at an extreme while the input keeps moving
-    sig = ("input range over which the output sits at its extreme (within 3 noise floors) while the "
-           "input still runs towards it, in fractions of the input span, where the residual exceeds the "
-           "noise by more than one noise floor")
-    stat = 0.0
-    for top in (True, False):
-        # the extreme without its noise: a high percentile of the output
-        lim = float(np.percentile(rec.y, 99.5 if top else 0.5))
-        at = np.abs(rec.y - lim) <= 3 * sigma
-        # on the branch that runs into the extreme (rising into the top): a
-        # hysteresis loop reaches its extreme only at the input's extreme, a
-        # clipped output long before (a loop's flat start after a reversal
-        # does not count)
-        at &= (rec.direction > 0) if top else (rec.direction < 0)
-        if at.mean() < 0.005 or at.all():
-            continue
-        # from where the output first sits there to the input's extreme (holds at the
-        # extreme put many samples at one input value: a percentile range would hide it)
-        if top:
-            reach = rec.vmax - float(np.percentile(rec.v[at], 5))
+    if only is None or only in ('rate_dependence',):
+        # -- rate dependence: residual against the input rate beyond static branch functions
+        sig = "residual against the input rate |dv/dt| beyond static functions of the input on each branch"
+        if not timed:
+            put("rate_dependence", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+        elif rec.peak_share >= 0.9:
+            put("rate_dependence", sig, 0.0, PARTIAL, False,
+                f"untested: {100 * rec.peak_share:.0f} % of the input's power lies within a factor 1.5 of "
+                f"{rec.f_peak:.3g} Hz; at one rate of excitation rate dependence cannot be told from the loop's "
+                "shape (add sines at other frequencies)")
         else:
-            reach = float(np.percentile(rec.v[at], 95)) - rec.vmin
-        # ... and only where the model misses it: the residual there exceeds the
-        # noise by more than one noise floor (RMS, in quadrature)
-        excess = math.sqrt(max(float(np.mean(e[at] ** 2)) - sigma ** 2, 0.0)) / sigma
-        if excess > 1.0:
-            stat = max(stat, reach / rec.span)
-    put("output_saturation", sig, stat, 0.03)
+            r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)
+            F = np.column_stack([r, r * np.abs(r), np.gradient(r)])
+            put("rate_dependence", sig, _partial(e, N, F) / sigma, PARTIAL)
 
-    # -- initial state: a misfit of its own at the record's start (before the input's
-    # first full excursion, and over the first 5, 10 and 20 % of the record: the
-    # memory of a preload is wiped out once the input passes the preload's extremes)
-    sig = ("residual with a level and gain of its own at the record's start (before the first full "
-           "excursion; first 5, 10, 20 %), beyond static functions of the input and a smooth trend")
-    lo = np.flatnonzero(rec.v <= rec.vmin + 0.05 * rec.span)
-    hi = np.flatnonzero(rec.v >= rec.vmax - 0.05 * rec.span)
-    k1 = int(max(lo[0], hi[0])) + 1 if lo.size and hi.size else n
-    ends = sorted({int(f * n) for f in (0.05, 0.1, 0.2)} | ({k1} if 10 <= k1 <= 0.6 * n else set()))
-    k_idx = np.arange(n)
-    F = np.column_stack([c for k in ends for c in ((k_idx < k).astype(float), (k_idx < k) * xc)])
-    tn = k_idx / (n - 1) - 0.5
-    Nt = np.column_stack([N, tn, tn ** 2])
-    put("initial_state", sig, _partial(e, Nt, F) / sigma, START, first_excursion=k1)
+    if only is None or only in ('delay',):
+        # -- delay: residual along the derivative of the prediction
+        sig = "residual along the model output's time derivative (a shift in time)"
+        if not timed:
+            put("delay", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+        else:
+            dp = np.gradient(pred)
+            dp = dp / (np.max(np.abs(dp)) or 1.0)
+            lag = _xcorr_lag(e, dp, max_lag=max(3, min(200, n // 50)))
+            put("delay", sig, _partial(e, N, dp[:, None]) / sigma, PARTIAL, lag_samples=lag)
+
+    if only is None or only in ('creep',):
+        # -- creep: relaxation during holds in the direction of the step into them
+        sig = "residual change during each hold against the sign of the step into it (either direction)"
+        moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
+        n_up = sum(1 for _, _, s in moved if s > 0)
+        n_dn = sum(1 for _, _, s in moved if s < 0)
+        if not timed:
+            put("creep", sig, 0.0, 0.3, False, "untested: the record has no time axis")
+        elif n_up < 1 or n_dn < 1 or len(moved) < 3:
+            put("creep", sig, 0.0, 0.3, False,
+                "untested: the input is held still after steps in both directions too rarely "
+                "(need at least 3 holds, after up and down steps)", holds=len(moved))
+        else:
+            rows = []
+            for k, j, s in moved:
+                m = max(2, (j - k) // 5)
+                rows.append((math.copysign(1.0, s), float(e[j - m:j].mean() - e[k:k + m].mean()), (j - k) * rec.dt))
+            R = np.array(rows)
+            X = np.column_stack([R[:, 0], R[:, 2] / R[:, 2].mean()])
+            coef, *_ = np.linalg.lstsq(X, R[:, 1], rcond=None)
+            res = R[:, 1] - X @ coef
+            dof = max(R.shape[0] - 2, 1)
+            se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
+            # the relaxation (in either direction: creep on, or relaxing back) must
+            # exceed 0.3 noise floors and 2.5 standard errors
+            stat = abs(float(coef[0])) / sigma
+            thr = max(0.3, 2.5 * se / sigma)
+            put("creep", sig, stat, round(thr, 4), holds=len(moved))
+
+    if only is None or only in ('drift', 'gain_drift'):
+        # -- drift / gain drift: slow trend in time beyond static functions of the input
+        sig = "residual's slow trend in time (t, t^2) beyond static functions of the input"
+        sig_g = "residual along t times the model output (a gain changing in time)"
+        if not timed:
+            put("drift", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
+            put("gain_drift", sig_g, 0.0, PARTIAL, False, "untested: the record has no time axis")
+        else:
+            tn = np.arange(n) / (n - 1) - 0.5
+            T = np.column_stack([tn, tn ** 2 - 1.0 / 12.0])
+            put("drift", sig, _partial(e, N, T) / sigma, PARTIAL)
+            pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
+            put("gain_drift", sig_g, _partial(e, np.column_stack([N, T]), (tn * pc)[:, None]) / sigma, PARTIAL)
+
+    if only is None or only in ('asymmetry', 'saturation'):
+        # -- asymmetry and saturation: even and odd bends against the input
+        s = rec.direction
+        N1 = np.column_stack([one, xc])
+        # a point-symmetric loop (what a PI model draws) leaves residuals odd under
+        # (v, dv/dt) -> (-v, -dv/dt); asymmetry leaves an even part
+        put("asymmetry", "residual against functions of the input even under (v, dv/dt) -> (-v, -dv/dt) "
+            "(v^2, sign(dv/dt) v^2, |v|, sign(dv/dt) v)",
+            _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc])) / sigma, PARTIAL)
+        put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
+            _partial(e, N1, np.column_stack([xc ** 3, xc ** 5])) / sigma, PARTIAL)
+
+    if only is None or only in ('output_saturation',):
+        # -- output saturation: the output stays flat at an extreme while the input keeps moving
+        sig = ("input range over which the output sits at its extreme (within 3 noise floors) while the "
+               "input still runs towards it, in fractions of the input span, where the residual exceeds the "
+               "noise by more than one noise floor")
+        stat = 0.0
+        for top in (True, False):
+            # the extreme without its noise: a high percentile of the output
+            lim = float(np.percentile(rec.y, 99.5 if top else 0.5))
+            at = np.abs(rec.y - lim) <= 3 * sigma
+            # on the branch that runs into the extreme (rising into the top): a
+            # hysteresis loop reaches its extreme only at the input's extreme, a
+            # clipped output long before (a loop's flat start after a reversal
+            # does not count)
+            at &= (rec.direction > 0) if top else (rec.direction < 0)
+            if at.mean() < 0.005 or at.all():
+                continue
+            # from where the output first sits there to the input's extreme (holds at the
+            # extreme put many samples at one input value: a percentile range would hide it)
+            if top:
+                reach = rec.vmax - float(np.percentile(rec.v[at], 5))
+            else:
+                reach = float(np.percentile(rec.v[at], 95)) - rec.vmin
+            # ... and only where the model misses it: the residual there exceeds the
+            # noise by more than one noise floor (RMS, in quadrature)
+            excess = math.sqrt(max(float(np.mean(e[at] ** 2)) - sigma ** 2, 0.0)) / sigma
+            if excess > 1.0:
+                stat = max(stat, reach / rec.span)
+        put("output_saturation", sig, stat, 0.03)
+
+    if only is None or only in ('initial_state',):
+        # -- initial state: a misfit of its own at the record's start (before the input's
+        # first full excursion, and over the first 5, 10 and 20 % of the record: the
+        # memory of a preload is wiped out once the input passes the preload's extremes)
+        sig = ("residual with a level and gain of its own at the record's start (before the first full "
+               "excursion; first 5, 10, 20 %), beyond static functions of the input and a smooth trend")
+        lo = np.flatnonzero(rec.v <= rec.vmin + 0.05 * rec.span)
+        hi = np.flatnonzero(rec.v >= rec.vmax - 0.05 * rec.span)
+        k1 = int(max(lo[0], hi[0])) + 1 if lo.size and hi.size else n
+        ends = sorted({int(f * n) for f in (0.05, 0.1, 0.2)} | ({k1} if 10 <= k1 <= 0.6 * n else set()))
+        k_idx = np.arange(n)
+        F = np.column_stack([c for k in ends for c in ((k_idx < k).astype(float), (k_idx < k) * xc)])
+        tn = k_idx / (n - 1) - 0.5
+        Nt = np.column_stack([N, tn, tn ** 2])
+        put("initial_state", sig, _partial(e, Nt, F) / sigma, START, first_excursion=k1)
     return ev
 
 

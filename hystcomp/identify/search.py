@@ -221,11 +221,13 @@ class VariableProjection:
         # goes further (the held-out part, another record)
         k_core = sum(1 for nm in names if nm.startswith("p") and nm[1:].isdigit())
         still = np.zeros(A.shape[1], bool)
-        if k_core > 1 and rows.any():
-            moves = np.ptp(A[rows, :k_core], axis=0)
+        Ar = _rows(A, rows)
+        if k_core > 1 and Ar.shape[0]:
+            Ac = Ar[:, :k_core]
+            moves = Ac.max(axis=0) - Ac.min(axis=0)
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
-        theta = self._solve(A[rows], target[rows], sw, still, lower, upper)
+        theta = self._solve(Ar, _rows(target, rows), sw, still, lower, upper)
         u = A @ theta
         ov = values.get(out.kind, {}) if out is not None else {}
         pred = u if out is None else out.output(u, ov, ctx)
@@ -238,8 +240,9 @@ class VariableProjection:
             rss = float(np.sum((y - pred)[tr] ** 2))
             for _ in range(GAUSS_NEWTON):
                 sl = slope(u, ov, ctx)
-                th = self._solve(A[tr], u[tr] + (y - pred)[tr] / np.where(sl[tr] > 1e-12, sl[tr], 1.0),
-                                 sl[tr], still, lower, upper)
+                slt = _rows(sl, tr)
+                th = self._solve(_rows(A, tr), _rows(u + (y - pred) / np.where(sl > 1e-12, sl, 1.0), tr),
+                                 slt, still, lower, upper)
                 u2 = A @ th
                 p2 = out.output(u2, ov, ctx)
                 r2 = float(np.sum((y - p2)[tr] ** 2))
@@ -255,14 +258,16 @@ class VariableProjection:
     def _solve(Ar, yr, sw, still, lower, upper):
         """Weights of the rows `Ar`, `yr` (row weights `sw`, columns `still`
         held at 0) by the one constrained least-squares solver."""
-        if still.any():
-            Ar = Ar.copy()
-            Ar[:, still] = 0.0
         if sw is not None:
             Ar, yr = Ar * sw[:, None], yr * sw
         n_r = max(Ar.shape[0], 1)
         G = Ar.T @ Ar
         b = Ar.T @ yr
+        if still.any():
+            # the columns held at 0 leave the problem (as zero columns would)
+            G[still, :] = 0.0
+            G[:, still] = 0.0
+            b[still] = 0.0
         yy = float(yr @ yr)
         s = np.sqrt(np.maximum(np.diag(G) / n_r, 0.0))
         s[s == 0] = 1.0
@@ -342,6 +347,14 @@ class VariableProjection:
                  options={"maxfev": int(max_evaluations), "initial_simplex": np.array(simplex),
                           "xatol": 1e-3, "fatol": 1e-9 * cache["best"].rss})
         return cache["best"]
+
+
+def _rows(a, rows):
+    """``a[rows]``, as a view when `rows` is a leading block (the training part)."""
+    k = int(np.count_nonzero(rows))
+    if k == rows.size or (rows[:k].all() if k else True):
+        return a[:k]
+    return a[rows]
 
 
 def _merge(a, b):
