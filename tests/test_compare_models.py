@@ -78,3 +78,22 @@ def test_arguments_checked():
         compare_models(v, v[:-1])
     with pytest.raises(ValueError, match="0 <= start < split"):
         compare_models(v, v, train=(50, 20))
+
+
+def test_executor_gives_the_same_comparison():
+    # every model is an independent job: a process pool gives the same numbers (the fits
+    # are deterministic), and the fitted models come back pickled
+    from concurrent.futures import ProcessPoolExecutor
+
+    v = 4 * np.sin(np.linspace(0, 24, 2400)) * np.linspace(1.0, 0.6, 2400)
+    y = BacklashLike(1.5, 3.0, 1.0, offset=0.2).simulate(v)
+    names = ("pi", "backlash_like", "preisach")
+    here = compare_models(v, y, models=names, n_cells=6)
+    with ProcessPoolExecutor(2) as ex:
+        there = compare_models(v, y, models=names, n_cells=6, executor=ex)
+    assert [r["name"] for r in there] == list(names)
+    for a, b in zip(here, there):
+        assert b["rms"] == pytest.approx(a["rms"], rel=1e-9, abs=1e-12)
+        np.testing.assert_allclose(b["model"].simulate(v), a["model"].simulate(v), rtol=0, atol=1e-9)
+    with pytest.raises(TypeError, match="executor"):
+        compare_models(v, y, models=("pi",), executor="pool")

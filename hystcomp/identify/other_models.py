@@ -129,7 +129,7 @@ def _plane_solve(G, b, yy, wsum, regularization, solver):
 def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
     import time
 
-    from ..preisach import KP, Preisach, preisach_grid
+    from ..preisach import KP, Preisach
     from .. import _kernels_other as _ko
 
     t0 = time.perf_counter()
@@ -568,7 +568,7 @@ _COMPARE_DEFAULT = ("pi", "mgpi", "preisach", "kp", "bouc_wen", "backlash_like")
 
 
 def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20, n_thresholds=20,
-                   max_train_samples=20000, train=None, progress=False):
+                   max_train_samples=20000, train=None, progress=False, executor=None):
     """Fit several hysteresis models on the first part of a record and
     compare them on the rest, side by side.
 
@@ -600,6 +600,11 @@ def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20
         part is always ``split:``.
     progress : bool
         A line per model on stderr.
+    executor : concurrent.futures.Executor, optional
+        Fits the models as independent jobs on it (e.g. a
+        ``ProcessPoolExecutor``, or ``distributed.Client(...).get_executor()``
+        for dask); results are the same as without.  None fits them one
+        after the other here.
 
     Returns
     -------
@@ -620,7 +625,6 @@ def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20
     (['pi', 'backlash_like'], True)
     """
     import sys
-    import time
 
     x = as_signal(v, "v")
     yv = as_signal(y, "y")
@@ -645,43 +649,60 @@ def compare_models(v, y, models=_COMPARE_DEFAULT, train_fraction=0.5, n_cells=20
                          f"{x.size - split} held-out samples; expected at least 10 and 1")
     step = max(1, int(math.ceil((split - start) / max_train_samples)))
     vt, yt = x[start:split:step], yv[start:split:step]
+    jobs = [(name, vt, yt, x, yv, start, split, n_cells, n_thresholds) for name in models]
+    if executor is None:
+        rows = map(_compare_one, jobs)
+    else:
+        if not hasattr(executor, "submit"):
+            raise TypeError(f"Parameter executor is {executor!r}; expected a concurrent.futures.Executor "
+                            "(or None)")
+        futures = [executor.submit(_compare_one, job) for job in jobs]
+        rows = (f.result() for f in futures)
     out = ModelComparison()
-    for name in models:
-        t0 = time.perf_counter()
-        offset = 0.0
-        if name in ("pi", "mgpi"):
-            if name == "pi":
-                res = fit_weights(vt, yt, model="pi", n_thresholds=n_thresholds)
-            else:
-                res = fit(vt, yt, envelope="tanh", n_thresholds=n_thresholds)
-            model, offset, npar = res.model, res.offset, res.thresholds.size + 2
-            if name == "mgpi":
-                npar += 1
-        elif name in ("preisach", "kp"):
-            lo, hi = float(x.min()), float(x.max())
-            fitter = fit_preisach if name == "preisach" else fit_kp
-            res = fitter(vt, yt, n=n_cells, input_range=(lo, hi))
-            model, npar = res.model, res.n_parameters
-        elif name == "bouc_wen":
-            res = fit_bouc_wen(vt, yt)
-            model, npar = res.model, res.n_parameters
-        else:
-            res = fit_backlash_like(vt, yt)
-            model, npar = res.model, res.n_parameters
-        fit_time = time.perf_counter() - t0
-        pred = model.simulate(x) + offset
-        e = yv - pred
-        held = e[split:]
-        etrain = e[start:split]
-        out.append({"name": name, "model": model, "offset": offset, "n_parameters": int(npar),
-                    "train_rms": float(np.sqrt(np.mean(etrain * etrain))),
-                    "rms": float(np.sqrt(np.mean(held * held))), "max": float(np.max(np.abs(held))),
-                    "fit_time": fit_time, "prediction": pred})
+    for row in rows:
+        out.append(row)
         if progress:
-            sys.stderr.write(f"compare_models: {name:<14} held-out rms {out[-1]['rms']:.4g} "
-                             f"({fit_time:.2f} s)\n")
+            sys.stderr.write(f"compare_models: {row['name']:<14} held-out rms {row['rms']:.4g} "
+                             f"({row['fit_time']:.2f} s)\n")
     return out
 
+
+def _compare_one(job):
+    """Fit one model of :func:`compare_models` and score it (module level, so that an
+    executor can run it in another process)."""
+    import time
+
+    name, vt, yt, x, yv, start, split, n_cells, n_thresholds = job
+    t0 = time.perf_counter()
+    offset = 0.0
+    if name in ("pi", "mgpi"):
+        if name == "pi":
+            res = fit_weights(vt, yt, model="pi", n_thresholds=n_thresholds)
+        else:
+            res = fit(vt, yt, envelope="tanh", n_thresholds=n_thresholds)
+        model, offset, npar = res.model, res.offset, res.thresholds.size + 2
+        if name == "mgpi":
+            npar += 1
+    elif name in ("preisach", "kp"):
+        lo, hi = float(x.min()), float(x.max())
+        fitter = fit_preisach if name == "preisach" else fit_kp
+        res = fitter(vt, yt, n=n_cells, input_range=(lo, hi))
+        model, npar = res.model, res.n_parameters
+    elif name == "bouc_wen":
+        res = fit_bouc_wen(vt, yt)
+        model, npar = res.model, res.n_parameters
+    else:
+        res = fit_backlash_like(vt, yt)
+        model, npar = res.model, res.n_parameters
+    fit_time = time.perf_counter() - t0
+    pred = model.simulate(x) + offset
+    e = yv - pred
+    held = e[split:]
+    etrain = e[start:split]
+    return {"name": name, "model": model, "offset": offset, "n_parameters": int(npar),
+            "train_rms": float(np.sqrt(np.mean(etrain * etrain))),
+            "rms": float(np.sqrt(np.mean(held * held))), "max": float(np.max(np.abs(held))),
+            "fit_time": fit_time, "prediction": pred}
 
 __all__ = ["ModelFit", "ModelComparison", "fit_preisach", "fit_kp", "fit_bouc_wen", "fit_backlash_like",
             "fit_duhem", "compare_models"]
