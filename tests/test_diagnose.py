@@ -312,3 +312,23 @@ def test_evidence_only_one_effect_equals_the_full_evidence():
     full = signatures(rec, e, rec.y - e, 0.01)
     for k in full:
         assert signatures(rec, e, rec.y - e, 0.01, only=k)[k] == full[k]
+
+
+def test_diagnose_many_on_an_executor_equals_one_by_one():
+    from concurrent.futures import ProcessPoolExecutor
+
+    from hystcomp.diagnose import diagnose_many
+
+    recs = [hidden_effect_data(e, seed=2, dt=DT)[:3] for e in ("drift", "creep", None)]
+    here = diagnose_many(recs, progress=False)
+    with ProcessPoolExecutor(2) as ex:
+        there = diagnose_many(recs, executor=ex, progress=False)
+    for a, b in zip(here, there):
+        assert (a.effects, a.verdict) == (b.effects, b.verdict)
+        assert b.rms_heldout == pytest.approx(a.rms_heldout, rel=1e-9)
+        # the diagnosed model came back through pickle and still simulates
+        assert np.allclose(b.model.simulate(recs[0][1]), a.model.simulate(recs[0][1]), rtol=0, atol=1e-9)
+    with pytest.raises(TypeError, match="records\\[0\\]"):
+        diagnose_many([1.0])
+    with pytest.raises(TypeError, match="executor"):
+        diagnose_many(recs[:1], executor=object())

@@ -48,7 +48,8 @@ from .record import find_holds
 from .report import SCHEMA_VERSION, Diagnosis
 from .search import EFFECTS, EXPLAINED, MIN_GAIN, run_search
 
-__all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "evidence", "add_arguments", "run", "load_csv"]
+__all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "diagnose_many", "evidence", "add_arguments", "run",
+           "load_csv"]
 
 #: every effect (the default candidates of :func:`diagnose`)
 ALL = EFFECTS
@@ -178,3 +179,6 @@ Diagnosis.__module__ = __name__
 for _f in (add_arguments, load_csv, run):
     _f.__module__ = __name__
 del _f
+
+
+from .many import diagnose_many  # noqa: E402  (it calls diagnose)
