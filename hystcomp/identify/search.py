@@ -439,6 +439,33 @@ class PartsModel:
         y = y + self.structure.after_output(self.values, ctx)
         return y if self.sign > 0 else -y
 
+    def exact_inverse(self, input_limits=None, tolerance=None):
+        """The causal compensator of this model
+        (:class:`~hystcomp.identify.parts_inverse.PartsInverse`): at each
+        sample the input for which the model's output equals the reference.
+
+        Parameters
+        ----------
+        input_limits : (float, float), optional
+            Input range the compensator may command (default the fitted
+            record's range widened by 10 % of its span on each side).
+        tolerance : float, optional
+            Input resolution (default 1e-9 of the input span).
+
+        Returns
+        -------
+        PartsInverse
+
+        Raises
+        ------
+        ValueError
+            Naming a part without a causal inverse (dead time, lags,
+            resonance).
+        """
+        from .parts_inverse import PartsInverse
+
+        return PartsInverse(self, input_limits, tolerance)
+
     def describe(self):
         """Readable parts and parameters (list of dicts)."""
         return [dict(p.describe(self.values.get(p.kind, {})), kind=p.kind, effect=p.effect)

@@ -1,0 +1,276 @@
+"""The causal inverse of a model built from parts (what :func:`hystcomp.diagnose.diagnose`
+returns): a compensator for a diagnosed actuator.
+
+At every sample the compensator finds the input for which the model's output equals the
+reference, given everything the model remembers (play states, creep lags, the clock), by
+bracketing on a grid and refining it (the output is nondecreasing in the current input: the
+weights are >= 0, creep coefficients >= 0, the gain and the output maps increasing), then
+advances the states with that input.  This is the exact inverse of eq. 40's kind for any
+part the model contains that can be inverted causally:
+
+- the PI core with every core option (modified plays with envelopes, eq. 23; rate-dependent,
+  level-dependent and asymmetric thresholds; a preload history);
+- the offset, drift and sensor drift (known functions of time), gain drift;
+- creep (lags of the input and of the driving model's output, inverted with their states);
+- the output bends ``a H^2``, ``c H^3`` of the driving model's output H;
+- the output maps (smooth saturation, clipping: references beyond the clip are clipped).
+
+A dead time, a lag or a resonance after or before the hysteresis has no causal inverse of the
+same order; :meth:`PartsInverse.simulate` names the part in its error (compensate a dead time
+with preview: the reference shifted that many samples earlier).
+"""
+
+import math
+
+import numpy as np
+
+__all__ = ["PartsInverse", "NOT_CAUSAL"]
+
+#: parts without a causal inverse, and what to do instead
+NOT_CAUSAL = {
+    "delay": "a dead time cannot be inverted causally; shift the reference earlier by the delay (preview)",
+    "input_lag": "a lag before the hysteresis has no causal inverse of the same order",
+    "output_lag": "a lag after the hysteresis has no causal inverse of the same order",
+    "output_resonance": "a resonance after the hysteresis has no causal inverse of the same order",
+}
+
+
+def _env(s, q, b):
+    u = s + q * s * s
+    if b == 0.0:
+        return u
+    return np.tanh(b * u) / b
+
+
+class _Stepper:
+    """One model's output for trial inputs at one sample, and its states."""
+
+    def __init__(self, model, n):
+        self.model = model
+        ctx = model._ctx
+        self.ctx_n = ctx.like(np.zeros(n))
+        st = model.structure
+        for p in st.parts:
+            if p.kind in NOT_CAUSAL:
+                raise ValueError(f"The model contains the part {p.kind!r} ({p.description}): {NOT_CAUSAL[p.kind]}")
+        vals = model.values
+        self.origin, self.scale = ctx.origin, ctx.scale
+        self.dt = ctx.dt
+        options = {}
+        for p in st.parts:
+            if p.slot == "core" and p.kind != "core":
+                p.core_options(vals.get(p.kind, {}), ctx, options)
+        self.r = np.asarray(ctx.thresholds, dtype=np.float64)
+        self.beta = float(options.get("beta", 0.0))
+        self.rho = float(options.get("rho", 1.0))
+        self.ql, self.qr = float(options.get("ql", 0.0)), float(options.get("qr", 0.0))
+        self.bl, self.br = float(options.get("bl", 0.0)), float(options.get("br", 0.0))
+        self.shift = float(options.get("shift", 0.0))
+        self.level = float(options.get("level", 0.0))
+        self.preload = [float(u) for u in options.get("preload", ())]
+        theta = model.theta
+        k = self.r.size
+        self.w_core = theta[:k]
+        # gain (filter slot): a known multiplier per sample
+        self.gain = np.ones(n)
+        for p in st.parts:
+            if p.slot == "filter":
+                self.gain = p.filter(self.gain[:, None], vals.get(p.kind, {}), self.ctx_n)[:, 0]
+        # additive parts: known in time, or creep (lags with states)
+        self.known = np.zeros(n)
+        self.creep = []
+        self.bends = []
+        j = k
+        for p in st.parts:
+            if p.slot != "additive":
+                continue
+            if p.kind == "creep_lags":
+                tau = p.time_constants(ctx)
+                m = tau.size
+                a = np.exp(-ctx.dt / tau)
+                w_in = theta[j:j + m]
+                j += m
+                driver, w_out = None, None
+                if p.driver is not None:
+                    w_out = theta[j:j + m]
+                    j += m
+                    driver = _Stepper(p.driver, n)
+                self.creep.append((a, w_in, w_out, driver))
+            elif p.kind in ("output_quadratic", "output_cubic"):
+                self.bends.append((p.power, p._center, p._scale, float(theta[j]), _Stepper(p.driver, n)))
+                j += 1
+            else:
+                cols = p.columns(vals.get(p.kind, {}), self.ctx_n)[0]
+                c = cols.shape[1]
+                self.known += cols @ theta[j:j + c]
+                j += c
+        self.out = st.output_part()
+        self.out_values = vals.get(self.out.kind, {}) if self.out is not None else {}
+        D = st.after_output(vals, self.ctx_n) if hasattr(st, "after_output") else 0.0
+        self.after = np.broadcast_to(np.asarray(D, dtype=np.float64), (n,)).copy()
+        self.sign = model.sign
+        self.reset()
+
+    def reset(self):
+        self.w = np.zeros(self.r.size)
+        for u in self.preload:
+            self.w = self._plays(np.array([u]), self.w, rate=0.0)[0]
+        self.prev = None
+        self.k = 0
+        self.lag_in = [None] * len(self.creep)
+        self.lag_out = [None] * len(self.creep)
+        for c in self.creep:
+            if c[3] is not None:
+                c[3].reset()
+        for b in self.bends:
+            b[4].reset()
+
+    def _plays(self, x, w, rate):
+        """Play states after trial scaled inputs x (shape (m,)) from states w: (m, N)."""
+        r = self.r
+        extra = (self.beta * np.broadcast_to(np.asarray(rate, dtype=np.float64), x.shape))[:, None]
+        grow = np.maximum(1.0 + self.level * x, 0.05)[:, None]
+        pos = (r > 0.0)[None, :]
+        ri = np.where(pos, r[None, :] * grow + extra, 0.0)
+        xi = np.where(pos, x[:, None] - self.shift, x[:, None])
+        lo = self.rho * _env(xi - ri, self.ql, self.bl)
+        hi = _env(xi + ri, self.qr, self.br)
+        return np.maximum(np.minimum(np.broadcast_to(w, lo.shape), hi), lo)
+
+    def output(self, x, commit=False):
+        """Model output (in the model's sign) for trial scaled inputs x (m,) at the current
+        sample; with commit, advance the states with x (one value)."""
+        k = self.k
+        if self.prev is None or self.dt is None:
+            rate = np.zeros_like(x)
+        else:
+            rate = np.abs(x - self.prev) / self.dt
+        W = self._plays(x, self.w, rate)
+        u = (W @ self.w_core) * self.gain[k] + self.known[k]
+        new_in, new_out, drv_out = [], [], []
+        for i, (a, w_in, w_out, driver) in enumerate(self.creep):
+            L = self.lag_in[i]
+            L = np.broadcast_to(x[:, None], (x.size, a.size)) if L is None else L[None, :]
+            Lin = a * L + (1.0 - a) * x[:, None]
+            u = u + Lin @ w_in
+            new_in.append(Lin)
+            if driver is not None:
+                h = driver.output(x)
+                Lo = self.lag_out[i]
+                Lo = np.broadcast_to(h[:, None], (x.size, a.size)) if Lo is None else Lo[None, :]
+                Lout = a * Lo + (1.0 - a) * h[:, None]
+                u = u + (h[:, None] - Lout) @ w_out
+                new_out.append(Lout)
+                drv_out.append(h)
+            else:
+                new_out.append(None)
+        for power, centre, scale, coef, driver in self.bends:
+            u = u + coef * ((driver.output(x) - centre) / scale) ** power
+        y = u if self.out is None else self.out.output(u, self.out_values, self.model._ctx)
+        y = y + self.after[k]
+        if commit:
+            self.w = W[0].copy()
+            self.prev = float(x[0])
+            for i, (a, w_in, w_out, driver) in enumerate(self.creep):
+                self.lag_in[i] = new_in[i][0].copy()
+                if driver is not None:
+                    driver.output(x, commit=True)
+                    self.lag_out[i] = new_out[i][0].copy()
+            for b in self.bends:
+                b[4].output(x, commit=True)
+            self.k += 1
+        return y
+
+
+class PartsInverse:
+    """Causal compensator of a :class:`~hystcomp.identify.search.PartsModel`
+    (see the module docstring): ``model.simulate(inverse.simulate(r))``
+    equals ``r`` wherever the model can reach ``r`` within the input limits.
+
+    Parameters
+    ----------
+    model : PartsModel
+        The model to invert.
+    input_limits : (float, float), optional
+        Smallest and largest input the compensator may command; default the
+        fitted record's input range widened by 10 % of its span on each side.
+    tolerance : float, optional
+        Input resolution of the per-sample solve (default 1e-9 of the input
+        span).
+
+    Examples
+    --------
+    >>> from hystcomp.identify.parts import Context
+    >>> from hystcomp.identify.search import PartsModel, Structure, VariableProjection
+    >>> v = 3 * np.sin(np.linspace(0, 20, 600))
+    >>> ctx = Context(v, None, 0.0, 3.0, None, n_thresholds=8)
+    >>> from hystcomp.models import PI
+    >>> y = PI(3 * np.arange(1, 8) / 8, np.full(7, 0.3), 1.0).simulate(v)
+    >>> vp = VariableProjection(ctx, y, np.arange(600) < 450)
+    >>> pt = vp.evaluate(Structure(), {})
+    >>> model = PartsModel(Structure(), pt.values, pt.theta, ctx, pt.names)
+    >>> r = 0.8 * y
+    >>> bool(np.max(np.abs(model.simulate(model.exact_inverse().simulate(r)) - r)) < 1e-6)
+    True
+    """
+
+    def __init__(self, model, input_limits=None, tolerance=None):
+        self.model = model
+        ctx = model._ctx
+        lo, hi = float(ctx.v.min()), float(ctx.v.max())
+        if input_limits is None:
+            span = (hi - lo) or 1.0
+            input_limits = (lo - 0.1 * span, hi + 0.1 * span)
+        try:
+            a, b = (float(x) for x in input_limits)
+        except (TypeError, ValueError):
+            raise TypeError(f"Parameter input_limits is {input_limits!r}; expected (low, high)") from None
+        if not (math.isfinite(a) and math.isfinite(b) and a < b):
+            raise ValueError(f"Parameter input_limits is {input_limits!r} but should be finite with low < high")
+        self.input_limits = (a, b)
+        self.tolerance = (b - a) * 1e-9 if tolerance is None else float(tolerance)
+        _Stepper(model, 2)          # the parts' errors now, not at the first simulate
+
+    def simulate(self, reference):
+        """The input that makes the model follow `reference`, from the model's
+        start conditions (its preload and clock).
+
+        Parameters
+        ----------
+        reference : array_like, shape (n,)
+            Desired output, sampled as the fitted record.
+
+        Returns
+        -------
+        ndarray, shape (n,)
+            Input; where the reference is out of reach the nearest input limit.
+        """
+        from .._validation import as_signal
+
+        ref = as_signal(reference, "reference")
+        n = ref.size
+        st = _Stepper(self.model, n)
+        target = ref * st.sign
+        a, b = ((x - st.origin) / st.scale for x in self.input_limits)
+        tol = self.tolerance / st.scale
+        out = np.empty(n)
+        grid = 33
+        for k in range(n):
+            lo, hi = a, b
+            yk = target[k]
+            while hi - lo > tol:
+                xs = np.linspace(lo, hi, grid)
+                ys = st.output(xs)
+                above = np.flatnonzero(ys >= yk)
+                if above.size == 0:
+                    lo = hi = xs[-1]
+                    break
+                j = int(above[0])
+                if j == 0:
+                    lo = hi = xs[0]
+                    break
+                lo, hi = xs[j - 1], xs[j]
+            x = 0.5 * (lo + hi)
+            st.output(np.array([x]), commit=True)
+            out[k] = st.origin + st.scale * x
+        return out
