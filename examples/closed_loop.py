@@ -14,6 +14,7 @@ Run:  python examples/closed_loop.py [--out DIR]
 """
 
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -29,9 +30,12 @@ from hystcomp.loops import build_scenarios, compare  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=".", help="folder for closed_loop.png")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-closed_loop-")
     dt = 1e-4
     t = np.arange(0, 2.0, dt)
     actuator = demo_actuator()

@@ -1,4 +1,7 @@
-"""Diagnose the measured piezo record (Chandra et al. 2023): which effect does a PI model lack?
+"""Diagnose a measured piezo record: which effect does a PI model lack?
+====================================================================
+
+Diagnose the measured piezo record (Chandra et al. 2023): which effect does a PI model lack?
 
 The whole record goes in: 3.26 s at 0 V, the voltage step to -87 V, then the
 1 Hz, +-150 V sine; the last 30 % (t = 7 .. 10 s) is held out.  A second run
@@ -10,8 +13,8 @@ docs/diagnose.md for the explanation).
 """
 
 import argparse
+import tempfile
 import os
-import sys
 
 import matplotlib
 
@@ -24,10 +27,13 @@ from hystcomp.diagnose import diagnose  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="diagnose_piezo_out", help="folder for the figures")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--full", action="store_true", help="all samples (5 kHz) instead of every 5th")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-diagnose_piezo-")
     os.makedirs(args.out, exist_ok=True)
     t, v, y = load_piezo()
     if not args.full:
@@ -67,4 +73,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

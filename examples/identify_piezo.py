@@ -1,4 +1,5 @@
-"""Identify PI and mGPI models of a measured piezo actuator.
+"""Identify PI and mGPI models of a measured piezo actuator
+========================================================
 
 Data: A. Chandra et al. (2023), a piezo actuator driven by a 1 Hz, +-150 V
 sine sampled at 5 kHz (MIT licence; ``hystcomp/data/SOURCE.md``).  The
@@ -14,6 +15,7 @@ Run: ``python examples/identify_piezo.py --out figures``
 """
 
 import argparse
+import tempfile
 import time
 from pathlib import Path
 
@@ -83,10 +85,13 @@ def plot(t, v, y, held, results, out):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=None, help="folder for the PNG (no figure if omitted)")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--thresholds", type=int, default=20, help="number of operators")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-identify_piezo-")
     t, v, y, train, held, results = run(args.thresholds)
     print(table(results))
     for name, res, _ in results:

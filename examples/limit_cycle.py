@@ -21,6 +21,7 @@ Run:  python examples/limit_cycle.py [--out DIR]
 """
 
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -50,10 +51,12 @@ def oscillation(v, t, t_from):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-limit_cycle-")
     os.makedirs(args.out, exist_ok=True)
     model = demo_actuator()
     stage = piezo_stage()
