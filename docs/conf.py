@@ -47,6 +47,7 @@ autodoc_member_order = "bysource"
 html_theme = "pydata_sphinx_theme"
 html_title = "hystcomp"
 html_static_path = ["_static"]
+html_css_files = ["hystcomp.css"]  # code blocks wrap instead of scrolling
 html_theme_options = {"navigation_with_keys": False}
 suppress_warnings = ["myst.xref_missing"]
 

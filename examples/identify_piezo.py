@@ -61,14 +61,11 @@ def table(results):
 
 
 def plot(t, v, y, held, results, out):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from hystcomp.plotting import new_figure
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, ax = new_figure(1, 2, size=(11, 4.5))
     ax[0].plot(v[held], y[held], "k.", ms=1, label="measured (held out)")
     for name, res, _ in results:
         ax[0].plot(v[held], (y - res.residuals)[held], lw=1, label=name)
@@ -77,10 +74,8 @@ def plot(t, v, y, held, results, out):
     ax[1].set(xlabel="t [s]", ylabel="residual [um]", title="held-out residual")
     ax[0].legend(fontsize=8)
     ax[1].legend(fontsize=8)
-    fig.tight_layout()
     path = out / "identify_piezo.png"
     fig.savefig(path, dpi=120)
-    plt.close(fig)
     return path
 
 
