@@ -102,7 +102,8 @@ def main(argv=None):
                   marker=None if radius > 1e-3 else "x", label=f"critical disc, {name}")
         if radius <= 1e-3:
             ax_n.plot([centre], [0], "x", color=color, ms=9, mew=2)
-    ax_n.set(xlim=(-0.8, 0.2), ylim=(-0.6, 0.4), aspect="equal", xlabel="Re", ylabel="Im",
+    ax_n.set(xlim=(-0.8, 0.2), ylim=(-0.6, 0.4), aspect="equal",
+             xlabel="Re [-] (loop gain, dimensionless)", ylabel="Im [-]",
              title="Nyquist curves of C P and the sectors' critical discs")
     ax_n.grid(True, alpha=0.3)
     ax_n.legend(fontsize=7, loc="lower left")

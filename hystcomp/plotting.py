@@ -152,7 +152,7 @@ def plot_operators(v, W, thresholds, ax=None, select=None, title=None, name="r")
     if title:
         ax.set_title(_wrap(title), fontsize=9)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside the curves
     return ax
 
 
