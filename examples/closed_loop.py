@@ -14,6 +14,7 @@ Run:  python examples/closed_loop.py [--out DIR]
 """
 
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -29,9 +30,12 @@ from hystcomp.loops import build_scenarios, compare  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=".", help="folder for closed_loop.png")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-closed_loop-")
     dt = 1e-4
     t = np.arange(0, 2.0, dt)
     actuator = demo_actuator()
@@ -44,13 +48,13 @@ def main(argv=None):
     result = compare(loops, r, t)
     print(result)
     os.makedirs(args.out, exist_ok=True)
-    fig = Figure(figsize=(13, 4.4), layout="constrained")
+    fig = Figure(figsize=(13, 5.0), layout="constrained")
     ax_y, ax_e = fig.subplots(1, 2)
     win = t <= 0.4
     ax_y.plot(t[win], r[win], "k--", lw=1.2, label="reference r")
     for row in result.rows:
         y = np.asarray(result.responses[row["scenario"]].outputs)[0]
-        lab = f"{row['label']}: {row['rms_percent']:.2g} % RMS"
+        lab = f"{row['label']}: {row['rms_percent']:.3g} % RMS"
         ax_y.plot(t[win], y[win], lw=0.9, label=lab)
         ax_e.plot(t[win], (y - r)[win], lw=0.9, label=lab)
     ax_y.set(xlabel="time t [s]", ylabel="stage position y [um]", title="tracking")
@@ -58,7 +62,7 @@ def main(argv=None):
     ax_e.set_yscale("symlog", linthresh=1e-3)
     for ax in (ax_y, ax_e):
         ax.grid(True, alpha=0.3)
-    ax_y.legend(fontsize=7, loc="lower left")
+    fig.legend(*ax_y.get_legend_handles_labels(), loc="outside lower center", ncols=3, fontsize=8)
     fig.suptitle(f"5 Hz reference; PID tuned to 60 deg phase margin at 80 Hz; exact compensator, nominal gain "
                  f"{comp.nominal_gain:.3f} um/V")
     fig.savefig(os.path.join(args.out, "closed_loop.png"), dpi=80)

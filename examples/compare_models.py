@@ -1,4 +1,7 @@
-"""Preisach, KP, Bouc-Wen and backlash-like models next to the PI model,
+"""Preisach, KP, Bouc-Wen and backlash-like models next to the PI model
+====================================================================
+
+Preisach, KP, Bouc-Wen and backlash-like models next to the PI model,
 on the measured piezo record: one fit each, their loops on one figure.
 
 Data: A. Chandra et al. (2023), a piezo actuator driven by a 1 Hz, +-150 V
@@ -13,6 +16,7 @@ Run: ``python examples/compare_models.py --out figures``
 """
 
 import argparse
+import tempfile
 from pathlib import Path
 
 import numpy as np
@@ -54,9 +58,12 @@ def plot(t, v, y, split, res, out):
 
 
 def main():
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="figures", help="folder for the PNG")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = ap.parse_args()
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-compare_models-")
     t, v, y, split, res = run()
     print(res.table())
     print(f"wrote {plot(t, v, y, split, res, args.out)}")

@@ -15,7 +15,7 @@ matrix and the diagnosis figures of one run.
 
 import argparse
 import os
-import sys
+import tempfile
 import time
 
 import matplotlib
@@ -53,12 +53,14 @@ def confusion(seeds, dt, first_seed=0, echo=print):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="diagnose_hidden_effects_out", help="folder for the figures")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None, help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--seeds", type=int, default=1, help="seeds per effect (default 1: a quick look)")
     ap.add_argument("--first-seed", type=int, default=0)
     ap.add_argument("--dt", type=float, default=0.01, help="sampling time [s] of the 40 s experiment")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-diagnose_hidden_effects-")
     os.makedirs(args.out, exist_ok=True)
     t0 = time.perf_counter()
     print(f"blind diagnosis: {args.seeds} seed(s) per effect, dt = {args.dt} s "
@@ -104,4 +106,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

@@ -14,7 +14,7 @@ asymmetry, and says what remains (docs/diagnose.md).
 
 import argparse
 import os
-import sys
+import tempfile
 
 import matplotlib
 
@@ -27,10 +27,12 @@ from hystcomp.diagnose import diagnose  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default="diagnose_piezo_out", help="folder for the figures")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None, help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--full", action="store_true", help="all samples (5 kHz) instead of every 5th")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-diagnose_piezo-")
     os.makedirs(args.out, exist_ok=True)
     t, v, y = load_piezo()
     if not args.full:
@@ -56,4 +58,4 @@ def main(argv=None):
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()

@@ -1,4 +1,5 @@
-"""Identify PI and mGPI models of a measured piezo actuator.
+"""Identify PI and mGPI models of a measured piezo actuator
+========================================================
 
 Data: A. Chandra et al. (2023), a piezo actuator driven by a 1 Hz, +-150 V
 sine sampled at 5 kHz (MIT licence; ``hystcomp/data/SOURCE.md``).  The
@@ -14,6 +15,7 @@ Run: ``python examples/identify_piezo.py --out figures``
 """
 
 import argparse
+import tempfile
 import time
 from pathlib import Path
 
@@ -59,14 +61,11 @@ def table(results):
 
 
 def plot(t, v, y, held, results, out):
-    import matplotlib
-
-    matplotlib.use("Agg")
-    import matplotlib.pyplot as plt
+    from hystcomp.plotting import new_figure
 
     out = Path(out)
     out.mkdir(parents=True, exist_ok=True)
-    fig, ax = plt.subplots(1, 2, figsize=(11, 4.5))
+    fig, ax = new_figure(1, 2, size=(11, 4.5))
     ax[0].plot(v[held], y[held], "k.", ms=1, label="measured (held out)")
     for name, res, _ in results:
         ax[0].plot(v[held], (y - res.residuals)[held], lw=1, label=name)
@@ -75,18 +74,19 @@ def plot(t, v, y, held, results, out):
     ax[1].set(xlabel="t [s]", ylabel="residual [um]", title="held-out residual")
     ax[0].legend(fontsize=8)
     ax[1].legend(fontsize=8)
-    fig.tight_layout()
     path = out / "identify_piezo.png"
     fig.savefig(path, dpi=120)
-    plt.close(fig)
     return path
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=None, help="folder for the PNG (no figure if omitted)")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--thresholds", type=int, default=20, help="number of operators")
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-identify_piezo-")
     t, v, y, train, held, results = run(args.thresholds)
     print(table(results))
     for name, res, _ in results:

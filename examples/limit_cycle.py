@@ -21,6 +21,7 @@ Run:  python examples/limit_cycle.py [--out DIR]
 """
 
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -50,10 +51,12 @@ def oscillation(v, t, t_from):
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-limit_cycle-")
     os.makedirs(args.out, exist_ok=True)
     model = demo_actuator()
     stage = piezo_stage()
@@ -108,8 +111,8 @@ def main(argv=None):
             ax_z.plot(t[last] * 1e3, v[last], color=color, lw=1.2, label=f"ki = {ki:g} /s, simulated")
             ax_z.plot(t[last] * 1e3, large[0] * np.sin(2 * np.pi * large[1] * t[last] + phase), color="k", ls=":",
                       lw=1.2, label=f"ki = {ki:g} /s, describing function ({large[0]:.1f} V, {large[1]:.1f} Hz)")
-    ax_n.set(xlim=(-0.75, 0.1), ylim=(-0.5, 0.2), xlabel="Re", ylabel="Im",
-             title="Nyquist curve against -1/N(A)")
+    ax_n.set(xlim=(-0.75, 0.1), ylim=(-0.5, 0.2), title="Nyquist curve against -1/N(A)",
+             xlabel="Re [-] (loop gain, dimensionless)", ylabel="Im [-]")
     ax_n.grid(True, alpha=0.3)
     ax_n.legend(fontsize=7, loc="lower left")
     ax_t.set(xlabel="time t [s]", ylabel="peak |v| per 5 ms [V]", ylim=(1e-4, 1e3),

@@ -1,5 +1,5 @@
 """Compensation under parameter mismatch
-=======================================
+=====================================
 
 The thesis leaves the compensation error under parameter mismatch as future work. Here the
 thesis's mGPI actuator is identified 8 times from noisy records (sensor noise 1 % of the
@@ -13,6 +13,7 @@ Run: python examples/mismatch.py --out DIR
 """
 
 import argparse
+import tempfile
 import os
 import warnings
 
@@ -29,10 +30,13 @@ from hystcomp.mismatch import mismatch_study  # noqa: E402
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=".", help="folder for mismatch.png")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     ap.add_argument("--seeds", type=int, default=8)
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-mismatch-")
     dt = 1e-4
     actuator, stage = demo_actuator(), piezo_stage()
     k_nom = compensator_system(actuator, nominal_gain="auto", input_range=(-2.0, 2.0)).nominal_gain

@@ -1,9 +1,13 @@
-"""Thesis section 3.4.3, table 3.1 (Figs. 3.13-3.16): the mGPI model with four
+"""Thesis section 3.4.3: the mGPI model with four envelope sets
+============================================================
+
+Thesis section 3.4.3, table 3.1 (Figs. 3.13-3.16): the mGPI model with four
 envelope sets under v(t) = 6 sin(pi t) + 4 cos(3.3 pi t), t in [0, 10].
 
 Run:  python examples/thesis_3_4_3.py [--out DIR]
 """
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -16,10 +20,12 @@ from hystcomp import PI, plotting, thesis  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figures (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-thesis_3_4_3-")
     os.makedirs(args.out, exist_ok=True)
     for k in (1, 2, 3, 4):
         case = thesis.section_3_4_3(k)

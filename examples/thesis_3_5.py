@@ -1,10 +1,14 @@
-"""Thesis section 3.5 (Figs. 3.17-3.19, eq. 29): PI, GPI and mGPI models with
+"""Thesis section 3.5: PI, GPI and mGPI models and the output bound
+================================================================
+
+Thesis section 3.5 (Figs. 3.17-3.19, eq. 29): PI, GPI and mGPI models with
 R = 10, p0 = 1, p(r) = e^{-0.1 r}, envelopes gl = 10 tanh(0.2 v),
 gr = 10 tanh(0.1 v), under v(t) = 10 sin(2 pi t) + t, t in [0, 10].
 
 Run:  python examples/thesis_3_5.py [--out DIR]
 """
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -18,10 +22,12 @@ from hystcomp.operators import generalized_play  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-thesis_3_5-")
     os.makedirs(args.out, exist_ok=True)
     case = thesis.section_3_5()
     v = case.signal

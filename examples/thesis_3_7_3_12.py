@@ -1,4 +1,7 @@
-"""Thesis Figs. 3.7 and 3.12: the elementary operators for several thresholds r.
+"""Thesis Figs. 3.7 and 3.12: the elementary operators for several thresholds
+==========================================================================
+
+Thesis Figs. 3.7 and 3.12: the elementary operators for several thresholds r.
 
 Fig. 3.7: input-output relationships under v(t) = 10 sin(t) with different
 thresholds r, (a) the classical play operator (eq. 13), (b) the generalized
@@ -16,6 +19,7 @@ saturates at +-5 and crosses zero at v = +-r (thesis section 3.4.1).
 Run:  python examples/thesis_3_7_3_12.py [--out DIR]
 """
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -29,10 +33,12 @@ from hystcomp import Tanh, generalized_play, modified_play, play  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-thesis_3_7_3_12-")
     os.makedirs(args.out, exist_ok=True)
 
     t = np.linspace(0.0, 4 * np.pi, 4001)      # two periods of v(t) = 10 sin(t)

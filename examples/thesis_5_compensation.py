@@ -1,10 +1,14 @@
-"""Thesis chapter 5 (Figs. 5.3, 5.4, 5.6): inverse compensation of the mGPI
+"""Thesis chapter 5: inverse compensation of the mGPI model
+========================================================
+
+Thesis chapter 5 (Figs. 5.3, 5.4, 5.6): inverse compensation of the mGPI
 model with gamma = v, 3v and atanh(0.5 v); the analytic inverse of eqs.
 54-58 against the exact inverse.
 
 Run:  python examples/thesis_5_compensation.py [--out DIR]
 """
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -17,10 +21,12 @@ from hystcomp import plotting, thesis  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figures (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-thesis_5_compensation-")
     os.makedirs(args.out, exist_ok=True)
     for name in thesis.SECTION_5:
         case = thesis.section_5(name)

@@ -1,4 +1,7 @@
-"""Thesis Fig. 3.5: input-output relationship of the PI model (section 3.2, eq. 18).
+"""Thesis Fig. 3.5: input-output relationship of the PI model
+==========================================================
+
+Thesis Fig. 3.5: input-output relationship of the PI model (section 3.2, eq. 18).
 
 The PI model with p0 = 1 and density p(r) = e^{-0.001 r}, initial value w(0) = 0.
 The thesis gives neither the input nor the thresholds of this figure; the input
@@ -11,6 +14,7 @@ grows quadratically, eq. 30).
 Run:  python examples/thesis_fig3_5.py [--out DIR]
 """
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -24,10 +28,12 @@ from hystcomp import MGPI, PI  # noqa: E402
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-thesis_fig3_5-")
     os.makedirs(args.out, exist_ok=True)
 
     t = np.arange(0.0, 10.0 + 1e-9, 1e-3)

@@ -21,6 +21,7 @@ Run:  python examples/tuned_loops.py [--out DIR]
 """
 
 import argparse
+import tempfile
 import os
 
 import matplotlib
@@ -42,10 +43,12 @@ DT = 1e-4
 
 
 def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--out", default=os.path.join(os.path.dirname(__file__), "output"),
-                        help="folder for the PNG figure (default examples/output/)")
+    parser = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    parser.add_argument("--out", default=None,
+                        help="folder for the figures (default: a new temporary folder)")
     args = parser.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-tuned_loops-")
     os.makedirs(args.out, exist_ok=True)
     model = demo_actuator()
     stage = piezo_stage()
@@ -99,7 +102,8 @@ def main(argv=None):
                   marker=None if radius > 1e-3 else "x", label=f"critical disc, {name}")
         if radius <= 1e-3:
             ax_n.plot([centre], [0], "x", color=color, ms=9, mew=2)
-    ax_n.set(xlim=(-0.8, 0.2), ylim=(-0.6, 0.4), aspect="equal", xlabel="Re", ylabel="Im",
+    ax_n.set(xlim=(-0.8, 0.2), ylim=(-0.6, 0.4), aspect="equal",
+             xlabel="Re [-] (loop gain, dimensionless)", ylabel="Im [-]",
              title="Nyquist curves of C P and the sectors' critical discs")
     ax_n.grid(True, alpha=0.3)
     ax_n.legend(fontsize=7, loc="lower left")

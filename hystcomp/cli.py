@@ -2,10 +2,15 @@
 
 ::
 
-    hystcomp demo   [--out DIR] [...]  # closed-loop study: loops tuned to one specification, with and without compensator
-    hystcomp thesis [--out DIR]        # all thesis figures + section 5 error table
+    hystcomp demo   [--out DIR] [--quiet] [...]  # closed-loop study: loops tuned to one specification,
+                                                 # with and without compensator
+    hystcomp thesis [--out DIR] [--quiet]        # all thesis figures + section 5 error table
     hystcomp diagnose DATA.csv [--time t | --no-time] [--input v --output y] [--json] [--plots DIR]
+                                                 # [--quiet]
     hystcomp --version
+
+``python -m hystcomp`` is the same command.  Progress bars (tqdm, on stderr)
+show only on a terminal; ``--quiet`` silences them and the status lines.
 
 ``demo`` runs the thesis's mGPI actuator in front of a piezo stage through
 loops whose PID is tuned to one specification (phase margin at a gain
@@ -29,7 +34,7 @@ __all__ = ["main", "build_parser", "reproduce"]
 _FIELDS = ("section", "inverse", "rms", "max", "rms_percent", "max_percent", "span")
 
 
-def reproduce(out, echo=print, dt=None):
+def reproduce(out, echo=print, dt=None, quiet=False):
     """Write every thesis figure and the section 5 error table into `out`.
 
     Parameters
@@ -37,9 +42,13 @@ def reproduce(out, echo=print, dt=None):
     out : str or path
         Output folder (created if missing).
     echo : callable, optional
-        Receives the progress and result lines (default :func:`print`).
+        Receives the status and result lines (default :func:`print`).
     dt : float, optional
         Sampling step of the cases (default :data:`hystcomp.thesis.DT`).
+    quiet : bool, optional
+        Only the error table: no status lines, no "wrote FILE" lines and no
+        progress bars (default False; the bars, tqdm on stderr, show only
+        on a terminal).
 
     Returns
     -------
@@ -60,27 +69,28 @@ def reproduce(out, echo=print, dt=None):
     matplotlib.use("Agg")  # figures are only written to files
     from . import plotting, thesis
 
+    status = (lambda line: None) if quiet else echo
     os.makedirs(out, exist_ok=True)
-    echo(f"hystcomp {__version__}: reproducing W. Ye's thesis into {out}")
-    echo("building figures (sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4) ...")
-    for stem, fig in plotting.thesis_figures(dt=dt).items():
+    status(f"hystcomp {__version__}: reproducing W. Ye's thesis into {out}")
+    status("building figures (sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4) ...")
+    for stem, fig in plotting.thesis_figures(dt=dt, progress=not quiet).items():
         path = os.path.join(out, stem + ".png")
         fig.savefig(path, dpi=100)
-        echo(f"  wrote {path}")
-    echo("computing section 5 compensation errors ...")
-    rows = thesis.compensation_errors(**({} if dt is None else {"dt": dt}))
+        status(f"  wrote {path}")
+    status("computing section 5 compensation errors ...")
+    rows = thesis.compensation_errors(**({} if dt is None else {"dt": dt}), progress=not quiet)
     path = os.path.join(out, "compensation_errors.csv")
     with open(path, "w", newline="") as fh:
         writer = csv.DictWriter(fh, fieldnames=_FIELDS)
         writer.writeheader()
         for row in rows:
             writer.writerow({k: row[k] for k in _FIELDS})
-    echo("")
+    status("")
     echo("Compensation error model(inverse(u)) - u (% of the reference span)")
     echo(f"{'section':8s} {'inverse':9s} {'RMS %':>10s} {'max %':>10s}")
     for row in rows:
         echo(f"{row['section']:8s} {row['inverse']:9s} {row['rms_percent']:10.3g} {row['max_percent']:10.3g}")
-    echo(f"  wrote {path}")
+    status(f"  wrote {path}")
     return rows
 
 
@@ -120,6 +130,8 @@ def build_parser():
     p.add_argument("--out", metavar="DIR", default="hystcomp-thesis",
                    help="output folder for the PNG figures and compensation_errors.csv "
                         "(default: ./hystcomp-thesis, created if missing)")
+    p.add_argument("--quiet", action="store_true",
+                   help="print only the error table: no status lines, no progress bars")
     return parser
 
 
@@ -135,7 +147,7 @@ def main(argv=None):
     """
     args = build_parser().parse_args(argv)
     if args.command == "thesis":
-        reproduce(args.out)
+        reproduce(args.out, quiet=args.quiet)
         return 0
     if args.command == "diagnose":
         from . import diagnose

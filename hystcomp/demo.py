@@ -37,9 +37,10 @@ PNG figures and ``loop_comparison.csv``.  Wired into the console command by
 import argparse
 import os
 import sys
-import time
 
 import numpy as np
+
+from ._progress import progress_bar
 
 __all__ = ["add_arguments", "run", "main", "demo_actuator", "reference", "stability_table", "crossover_scan"]
 
@@ -211,8 +212,8 @@ def add_arguments(parser):
     parser : argparse.ArgumentParser
         The parser (or subparser) to extend: ``--out``, ``--duration``,
         ``--dt``, ``--freqs``, ``--phase-margin``, ``--crossovers``,
-        ``--required-margin``, ``--stage-hz``, ``--damping``, ``--engine``
-        and ``--no-figures``.
+        ``--required-margin``, ``--stage-hz``, ``--damping``, ``--engine``,
+        ``--no-figures`` and ``--quiet``.
 
     Examples
     --------
@@ -245,21 +246,8 @@ def add_arguments(parser):
                         help="how the loops run: compiled (numba; default via auto) or python-control's "
                              "input_output_response (about 1000x slower: use with a short --duration)")
     parser.add_argument("--no-figures", action="store_true", help="skip the PNG figures")
-
-
-def _progress(stream):
-    start = time.perf_counter()
-
-    def show(done, total, name):
-        if stream is None:
-            return
-        bar = "#" * int(30 * done / total)
-        stream.write(f"\r  [{bar:30s}] {done}/{total} {name:44s} {time.perf_counter() - start:5.1f} s")
-        if done == total:
-            stream.write("\n")
-        stream.flush()
-
-    return show
+    parser.add_argument("--quiet", action="store_true",
+                        help="no progress bar and no 'wrote FILE' lines (the tables and checks still print)")
 
 
 _LOOPS = (  # key, scenario, controller, label
@@ -282,8 +270,10 @@ def run(args, echo=print, progress_stream=None):
     echo : callable, optional
         Receives the printed lines (default :func:`print`).
     progress_stream : file-like, optional
-        Where the progress bar goes; default the current ``sys.stderr``
-        (looked up at call time, so redirected streams are honoured).
+        Where the progress bar (tqdm) goes; default the current
+        ``sys.stderr`` (looked up at call time, so redirected streams are
+        honoured).  The bar shows only when the stream is a terminal and
+        ``args.quiet`` is not set.
 
     Returns
     -------
@@ -308,8 +298,6 @@ def run(args, echo=print, progress_stream=None):
     >>> [os.path.basename(p) for p in res["files"]]
     ['loop_comparison.csv']
     """
-    if progress_stream is None:
-        progress_stream = sys.stderr
     import csv
 
     import control as ct
@@ -392,9 +380,11 @@ def run(args, echo=print, progress_stream=None):
             work.append((f, key, label, lp, r))
         lp = build_loop("feedforward", model, stage, compensator=comp_analytic, dt=dt, name="feedforward_analytic")
         work.append((f, "feedforward_analytic", "inverse feedforward (analytic)", lp, r))
-    show = _progress(progress_stream)
+    quiet = bool(getattr(args, "quiet", False))
     rows, responses = [], {}
-    for j, (f, key, label, lp, r) in enumerate(work):
+    bar = progress_bar(total=len(work), desc="loops", enabled=not quiet, file=progress_stream, unit="loop")
+    for f, key, label, lp, r in work:
+        bar.set_postfix_str(f"{f:g} Hz {key}", refresh=False)
         res = compare([lp], r, t, engine=args.engine)
         row = dict(res.rows[0])
         fc = {"pid_raw_safe": fc_raw}.get(key, fc_comp if key in ("pid_raw_fast", "pid_compensated", "two_dof")
@@ -402,7 +392,8 @@ def run(args, echo=print, progress_stream=None):
         row.update(reference_hz=f, loop=key, label=label, crossover_hz=fc)
         rows.append(row)
         responses[(f, key)] = res.responses[key]
-        show(j + 1, len(work), f"{f:g} Hz {key}")
+        bar.update()
+    bar.close()
     echo("")
     echo(f"4. tracking error y - r [um], reference 5 sin(2 pi f t)/(1 + 0.1 t) (span "
          f"{np.ptp(reference(t, 1.0)):.3g} um)")
@@ -453,8 +444,9 @@ def run(args, echo=print, progress_stream=None):
                   margins=margins, controllers=ctrl)
     if not args.no_figures:
         files += _figures(out, args, t, rows, responses, scan, design, need)
-    for p in files:
-        echo(f"  wrote {p}")
+    if not quiet:
+        for p in files:
+            echo(f"  wrote {p}")
     return dict(rows=rows, scan=scan, design=design, checks=checks, files=files)
 
 

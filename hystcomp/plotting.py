@@ -9,6 +9,10 @@ work under any backend (no window opens) and the caller saves them with
 * :func:`plot_compensation` -- u, v = inverse(u) and w = model(v) in time;
 * :func:`plot_loading_curve` -- simulated vs analytic loading curve;
 * :func:`thesis_figures` -- every figure of the thesis reproduction.
+
+The thesis's cases carry no physical units, so the default axis labels say
+"[a.u.]" (arbitrary units, the same for input and output); pass your own
+labels (``xlabel="voltage [V]"``) for measured data.
 """
 
 import textwrap
@@ -53,7 +57,7 @@ def new_figure(nrows=1, ncols=1, size=(6.4, 4.8)):
     return fig, axes
 
 
-def plot_loop(v, w, ax=None, label=None, title=None, xlabel="input v(t)", ylabel="output w(t)", **kw):
+def plot_loop(v, w, ax=None, label=None, title=None, xlabel="input v [a.u.]", ylabel="output w [a.u.]", **kw):
     """Plot the input-output loop w(v).
 
     Parameters
@@ -143,12 +147,12 @@ def plot_operators(v, W, thresholds, ax=None, select=None, title=None, name="r")
     for j in cols:
         ax.plot(v, W[:, j], lw=0.9, label=f"{name} = {r[j]:g}")
     ax.axhline(0.0, color="k", lw=0.5)
-    ax.set_xlabel("input v(t)")
-    ax.set_ylabel("operator output")
+    ax.set_xlabel("input v [a.u.]")
+    ax.set_ylabel("operator output [a.u.]")
     if title:
         ax.set_title(_wrap(title), fontsize=9)
     ax.grid(True, alpha=0.3)
-    ax.legend(fontsize=7)
+    ax.legend(fontsize=7, loc="upper left", bbox_to_anchor=(1.01, 1.0))  # beside the curves
     return ax
 
 
@@ -188,14 +192,15 @@ def plot_compensation(t, u, v, w, title=None, error_label=None):
     a1.plot(t, u, lw=1.6, label="u(t) reference")
     a1.plot(t, v, lw=0.9, label="v(t) = inverse[u](t)")
     a1.plot(t, w, "--", lw=0.9, label="w(t) = model[v](t)")
-    a1.set_xlabel("t (s)")
-    a1.legend(fontsize=8, loc="upper right")
+    a1.set_xlabel("time t [s]")
+    a1.set_ylabel("u, v, w [a.u.]")
+    a1.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     a1.grid(True, alpha=0.3)
     if title:
         a1.set_title(_wrap(title, 100), fontsize=9)
     a2.plot(t, w - u, lw=0.8, color="C3")
-    a2.set_xlabel("t (s)")
-    a2.set_ylabel("w(t) - u(t)")
+    a2.set_xlabel("time t [s]")
+    a2.set_ylabel("error w - u [a.u.]")
     a2.set_title(error_label or "tracking error", fontsize=9)
     a2.grid(True, alpha=0.3)
     return fig
@@ -233,8 +238,8 @@ def plot_loading_curve(r, simulated, analytic, ax=None, title=None):
         _, ax = new_figure()
     ax.plot(r, analytic, lw=1.5, label="derived, eq. 35")
     ax.plot(r, simulated, "o", ms=3, mfc="none", label="simulated")
-    ax.set_xlabel("input v(t)")
-    ax.set_ylabel("output w(t)")
+    ax.set_xlabel("input r [a.u.]")
+    ax.set_ylabel("loading curve phi(r) [a.u.]")
     if title:
         ax.set_title(_wrap(title), fontsize=9)
     ax.grid(True, alpha=0.3)
@@ -334,7 +339,7 @@ def figure_5(case, analytic=True):
     )
 
 
-def thesis_figures(dt=None):
+def thesis_figures(dt=None, progress=False):
     """Every figure of the thesis reproduction, as ``{file stem: Figure}``.
 
     Parameters
@@ -343,6 +348,9 @@ def thesis_figures(dt=None):
         Sampling time of the thesis's input signals in seconds; default
         each case's own (see :mod:`hystcomp.thesis`).  A coarser one makes
         quick previews.
+    progress : bool, optional
+        A progress bar (tqdm) on stderr, shown only on a terminal
+        (default False).
 
     Returns
     -------
@@ -357,15 +365,16 @@ def thesis_figures(dt=None):
     ['fig2_1', 'fig3_13', 'fig3_14']
     """
     from . import thesis
+    from ._progress import progress_bar
 
     kw = {} if dt is None else {"dt": dt}
-    figs = {"fig2_1": figure_2_1(thesis.figure_2_1(**kw))}
-    for k in (1, 2, 3, 4):
-        case = thesis.section_3_4_3(k, **kw)
-        figs["fig" + case.extra["figure"].replace(".", "_")] = figure_3_4_3(case)
-    figs["fig3_17-3_19"] = figure_3_5(thesis.section_3_5(**kw))
-    figs["fig4_1-4_2"] = figure_4_1(thesis.section_4_1(**kw))
-    for name in thesis.SECTION_5:
-        case = thesis.section_5(name, **kw)
-        figs["fig" + case.extra["figure"].replace(".", "_")] = figure_5(case)
-    return figs
+
+    def stem(case):
+        return "fig" + case.extra["figure"].replace(".", "_")
+
+    jobs = [lambda: ("fig2_1", figure_2_1(thesis.figure_2_1(**kw)))]
+    jobs += [lambda k=k: (lambda c: (stem(c), figure_3_4_3(c)))(thesis.section_3_4_3(k, **kw)) for k in (1, 2, 3, 4)]
+    jobs += [lambda: ("fig3_17-3_19", figure_3_5(thesis.section_3_5(**kw))),
+             lambda: ("fig4_1-4_2", figure_4_1(thesis.section_4_1(**kw)))]
+    jobs += [lambda n=n: (lambda c: (stem(c), figure_5(c)))(thesis.section_5(n, **kw)) for n in thesis.SECTION_5]
+    return dict(job() for job in progress_bar(jobs, desc="thesis figures", enabled=progress, unit="fig"))

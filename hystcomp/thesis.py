@@ -554,7 +554,7 @@ def section_5_4(dt=DT):
     return section_5("5.4", dt)
 
 
-def compensation_errors(dt=DT):
+def compensation_errors(dt=DT, progress=False):
     """Tracking errors of the analytic inverse (eqs. 54-58) and of the exact
     inverse for sections 5.2-5.4: ``model(inverse(u)) - u``.
 
@@ -562,6 +562,9 @@ def compensation_errors(dt=DT):
     ----------
     dt : float, optional
         Sampling step in seconds (default :data:`DT`).
+    progress : bool, optional
+        A progress bar (tqdm) on stderr, shown only on a terminal
+        (default False).
 
     Returns
     -------
@@ -576,10 +579,11 @@ def compensation_errors(dt=DT):
     >>> [(r["section"], r["inverse"]) for r in rows][:2]
     [('5.2', 'analytic'), ('5.2', 'exact')]
     """
+    from ._progress import progress_bar
     from .inverses import tracking_error
 
     rows = []
-    for name in SECTION_5:
+    for name in progress_bar(SECTION_5, desc="section 5 errors", enabled=progress, unit="case"):
         case = section_5(name, dt)
         model = case.model
         for kind, comp in (("analytic", model.inverse()), ("exact", model.exact_inverse())):

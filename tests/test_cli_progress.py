@@ -1,0 +1,81 @@
+"""``python -m hystcomp``, ``--quiet`` on every subcommand, tqdm progress that
+stays off redirected streams."""
+
+import argparse
+import io
+import os
+import subprocess
+import sys
+
+from hystcomp import __version__, cli, demo
+from hystcomp._progress import progress_bar
+
+
+class _Terminal(io.StringIO):
+    def isatty(self):
+        return True
+
+
+def test_python_dash_m_hystcomp_version():
+    proc = subprocess.run([sys.executable, "-m", "hystcomp", "--version"],
+                          capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip() == f"hystcomp {__version__}"
+
+
+def test_every_subcommand_has_quiet():
+    parser = cli.build_parser()
+    subs = next(a for a in parser._actions if isinstance(a, argparse._SubParsersAction))
+    assert sorted(subs.choices) == ["demo", "diagnose", "thesis"]
+    for name, sub in subs.choices.items():
+        options = {o for a in sub._actions for o in a.option_strings}
+        assert "--quiet" in options, name
+
+
+def test_progress_bar_shows_on_a_terminal_only():
+    tty, pipe = _Terminal(), io.StringIO()
+    assert sum(progress_bar(range(5), desc="x", file=tty)) == 10
+    assert sum(progress_bar(range(5), desc="x", file=pipe)) == 10
+    assert "5/5" in tty.getvalue()   # tqdm drew the bar
+    assert pipe.getvalue() == ""     # not a terminal: nothing, no carriage returns
+    quiet = _Terminal()
+    list(progress_bar(range(5), file=quiet, enabled=False))
+    assert quiet.getvalue() == ""
+
+
+def _demo_args(out, *extra):
+    p = argparse.ArgumentParser()
+    demo.add_arguments(p)
+    return p.parse_args(["--out", str(out), "--duration", "0.01", "--freqs", "5",
+                         "--crossovers", "50", "80", "--no-figures", *extra])
+
+
+def test_demo_progress_on_terminal_and_quiet(tmp_path):
+    lines, tty = [], _Terminal()
+    demo.run(_demo_args(tmp_path / "a"), echo=lines.append, progress_stream=tty)
+    assert "loops" in tty.getvalue() and "\r" in tty.getvalue()
+    assert any(line.startswith("  wrote ") for line in lines)
+    lines, tty = [], _Terminal()
+    res = demo.run(_demo_args(tmp_path / "b", "--quiet"), echo=lines.append, progress_stream=tty)
+    assert tty.getvalue() == ""
+    assert not any(line.startswith("  wrote ") for line in lines)
+    assert any("PASS" in line or "FAIL" in line for line in lines)  # results still print
+    assert os.path.exists(res["files"][0])
+
+
+def test_thesis_quiet_prints_only_the_table(tmp_path):
+    lines = []
+    rows = cli.reproduce(tmp_path, echo=lines.append, dt=0.05, quiet=True)
+    assert len(rows) == 6
+    assert lines[0].startswith("Compensation error")
+    assert not any("wrote" in line for line in lines)
+    assert len(lines) == 2 + len(rows)   # title, header, one line per row
+
+
+def test_redirected_subprocess_has_no_carriage_returns(tmp_path):
+    proc = subprocess.run([sys.executable, "-m", "hystcomp", "demo", "--out", str(tmp_path), "--duration", "0.01",
+                           "--freqs", "5", "--crossovers", "50", "80", "--no-figures"],
+                          capture_output=True, text=True, timeout=600)
+    # exit 1: a 10 ms record is too short for every check of the demo to pass
+    assert proc.returncode in (0, 1) and "checks" in proc.stdout, proc.stderr
+    assert "\r" not in proc.stderr and "\r" not in proc.stdout
