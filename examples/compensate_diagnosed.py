@@ -14,6 +14,7 @@ Run: python examples/compensate_diagnosed.py --out DIR
 
 import argparse
 import os
+import tempfile
 
 import matplotlib
 
@@ -37,10 +38,12 @@ def true_response(seed, v, amplitude):
 
 
 def main(argv=None):
-    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    ap.add_argument("--out", default=".", help="folder for compensate_diagnosed.png")
+    ap = argparse.ArgumentParser(description=(__doc__ or "").partition("\n")[0])
+    ap.add_argument("--out", default=None, help="folder for compensate_diagnosed.png (default: a new temporary folder)")
     ap.add_argument("--seed", type=int, default=0)
     args = ap.parse_args(argv)
+    if args.out is None:
+        args.out = tempfile.mkdtemp(prefix="hystcomp-compensate_diagnosed-")
     d = hidden_effect_data("creep", seed=args.seed, dt=DT)
     A = float(np.max(np.abs(d.v)))
     rep = diagnose(d.t, d.v, d.y, progress=False)
