@@ -395,7 +395,7 @@ def run(args, echo=print, progress_stream=None):
     show = _progress(progress_stream)
     rows, responses = [], {}
     for j, (f, key, label, lp, r) in enumerate(work):
-        res = compare([lp], r, t, engine=args.engine)
+        res = compare([lp], t, r, engine=args.engine)
         row = dict(res.rows[0])
         fc = {"pid_raw_safe": fc_raw}.get(key, fc_comp if key in ("pid_raw_fast", "pid_compensated", "two_dof")
                                            else float("nan"))

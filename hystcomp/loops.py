@@ -35,7 +35,7 @@ Examples
 >>> sorted(loops)
 ['feedback', 'feedback_compensated', 'feedforward', 'open_loop', 'two_dof']
 >>> t = np.arange(2000) * dt
->>> result = compare(loops, 2 * np.sin(2 * np.pi * 5 * t), t)
+>>> result = compare(loops, t, 2 * np.sin(2 * np.pi * 5 * t))
 >>> bool(result.row("feedforward")["rms"] < result.row("open_loop")["rms"] / 10)
 True
 """
@@ -43,6 +43,7 @@ True
 import csv
 import sys
 import time
+import warnings
 from concurrent.futures import as_completed
 
 import numpy as np
@@ -52,8 +53,8 @@ import control as ct
 from . import _loop_kernels as _lk
 from ._validation import as_scalar, as_signal, check_choice
 from .iosys import (
-    WiringError, _feedthrough, compensator_system, discretize, hysteresis_system, initial_state,
-    interconnect, pid,
+    CompensatorBlock, SaturatedPID, WiringError, compensator_system, discretize, hysteresis_system,
+    initial_state, interconnect, pid,
 )
 from ._block_specs import _NONE_SPEC, _spec, _ss_arrays
 from ._fast_loops import fast_response
@@ -102,7 +103,7 @@ class Loop:
         Sampling time of every block.
     hysteresis : HysteresisModel
         The actuator model.
-    compensator : control.NonlinearIOSystem or None
+    compensator : hystcomp.iosys.CompensatorBlock or None
         The compensator block (``.compensator``, ``.nominal_gain``).
     controller, plant : python-control systems or None
         Discrete; signals renamed to the loop's.
@@ -138,17 +139,25 @@ class Loop:
         """X0 of :attr:`system`: blocks in their virgin states."""
         return initial_state(self.system)
 
-    def simulate(self, t, reference, engine="python-control"):
-        """Response to a reference: ``engine="python-control"`` runs
-        :func:`control.input_output_response`, ``"compiled"``
-        :func:`simulate_loop`.
+    def simulate(self, timepts=None, inputs=None, initial_state=None, params=None, engine="python-control",
+                 **deprecated):
+        """Response to a reference, in python-control's argument order:
+        ``engine="python-control"`` runs :func:`control.input_output_response`,
+        ``"compiled"`` :func:`simulate_loop`.
 
         Parameters
         ----------
-        t : array_like, shape (n,)
+        timepts : array_like, shape (n,)
             Uniform time vector with the loop's step `dt`.
-        reference : array_like, shape (n,)
-            Reference samples r[k].
+        inputs : array_like, shape (n,)
+            Reference samples r[k].  (The old keywords ``t=`` and
+            ``reference=`` still work, with a DeprecationWarning.)
+        initial_state : array_like, optional
+            X0 of :attr:`system`; default the virgin state
+            (:meth:`initial_state`).
+        params : dict, optional
+            python-control's parameters, e.g. ``{"actuator_gain": 1.1}`` or
+            ``{"nominal_gain": 2.0}`` for sweeps.
         engine : {"python-control", "compiled"}, optional
             Who simulates; both give the same numbers to rounding, the
             compiled loop about a thousand times faster.
@@ -170,16 +179,65 @@ class Loop:
         >>> b = loop.simulate(t, r, engine="compiled").outputs
         >>> a.shape, bool(np.allclose(a, b, rtol=0, atol=1e-12))
         ((3, 40), True)
+        >>> c = loop.simulate(t, r, params={"actuator_gain": 1.2}).outputs   # w scaled by 1.2
+        >>> bool(np.allclose(c[1], 1.2 * a[1], rtol=0, atol=1e-12))
+        True
         """
         check_choice(engine, "engine", ("python-control", "compiled"))
+        t, r = _time_and_reference(self, timepts, inputs, deprecated, "Loop.simulate")
         if engine == "compiled":
-            return simulate_loop(self, reference, t)
-        t = as_signal(t, "t")
-        r = as_signal(reference, "reference")
-        return ct.input_output_response(self.system, t, r, X0=self.initial_state())
+            return simulate_loop(self, t, r, initial_state=initial_state, params=params)
+        x0 = self.initial_state() if initial_state is None else initial_state
+        return ct.input_output_response(self.system, t, r, initial_state=x0, params=params)
 
     def __repr__(self):
         return f"Loop({self.scenario!r}, name={self.name!r}, dt={self.dt})"
+
+
+def _is_time(t, n, dt):
+    return t.size == n and (n < 2 or np.allclose(np.diff(t), dt, rtol=1e-9, atol=0))
+
+
+def _time_and_reference(loop, timepts, inputs, deprecated, where):
+    """(t, r) from python-control's order ``(timepts, inputs)``, accepting the
+    old forms ``(reference)``, ``(reference, t)`` and the keywords ``t=``,
+    ``reference=`` with a DeprecationWarning."""
+    old = {k: deprecated.pop(k) for k in ("t", "reference") if k in deprecated}
+    if deprecated:
+        raise TypeError(f"{where}() got unexpected keyword arguments {sorted(deprecated)}")
+    msg = (f"{where}: the order is now python-control's (timepts, inputs[, initial_state]); "
+           "{what} is deprecated")
+    if old:
+        if "reference" in old:
+            if inputs is not None:
+                raise TypeError(f"{where}() got both inputs and the old keyword reference")
+            if "t" not in old and timepts is not None:
+                old["t"] = timepts
+            inputs = old["reference"]
+            timepts = old.get("t")
+        else:
+            timepts = old["t"]
+        warnings.warn(msg.format(what="the keywords t= and reference="), DeprecationWarning, stacklevel=3)
+    elif inputs is None and timepts is not None:
+        warnings.warn(msg.format(what="passing the reference alone"), DeprecationWarning, stacklevel=3)
+        inputs, timepts = timepts, None
+    if inputs is None:
+        raise TypeError(f"{where}() missing the arguments timepts and inputs (the time vector and the "
+                        "reference samples)")
+    r = as_signal(inputs, "inputs")
+    if timepts is None:
+        return np.arange(r.size) * loop.dt, r
+    t = as_signal(timepts, "timepts")
+    if t.size != r.size:
+        raise ValueError(f"Parameter timepts has {t.size} samples but inputs has {r.size}")
+    if not _is_time(t, t.size, loop.dt) and _is_time(r, r.size, loop.dt):
+        # the old order (reference, t): unambiguous since the first is no time vector
+        warnings.warn(msg.format(what="the order (reference, t)"), DeprecationWarning, stacklevel=3)
+        t, r = r, t
+    if t.size > 1 and not _is_time(t, t.size, loop.dt):
+        raise ValueError(f"Parameter timepts has steps from {np.diff(t).min()!r} to {np.diff(t).max()!r} "
+                         f"but the loop's dt is {loop.dt}")
+    return t, r
 
 
 def _rename_lti(sys, dt, inputs, outputs, name):
@@ -196,19 +254,18 @@ def _rename_lti(sys, dt, inputs, outputs, name):
             f"build it at dt = {dt} (continuous systems are discretised automatically)"
         )
     s = ct.ss(sys)
-    return ct.ss(s.A, s.B, s.C, s.D, dt, inputs=inputs, outputs=outputs, name=name)
+    return ct.ss(s.A, s.B, s.C, s.D, dt, inputs=inputs, outputs=outputs, name=name, states=s.state_labels)
 
 
 def _controller_block(controller, dt, outputs):
-    info = getattr(controller, "_hystcomp", None)
-    if info is not None and info.get("kind") == "pid":
-        if not np.isclose(info["dt"], dt, rtol=1e-12, atol=0):
+    if isinstance(controller, SaturatedPID):
+        if not np.isclose(controller.dt, dt, rtol=1e-12, atol=0):
             raise WiringError(
-                f"timebase mismatch: the controller {controller.name!r} has dt = {info['dt']} but the "
+                f"timebase mismatch: the controller {controller.name!r} has dt = {controller.dt} but the "
                 f"loop runs at dt = {dt}; build it with pid(..., dt={dt})"
             )
-        return pid(info["kp"], info["ki"], info["kd"], info["dt"], tau_d=info["tau_d"],
-                   output_limits=info["limits"], name="controller", inputs="e", outputs=outputs)
+        return pid(controller.kp, controller.ki, controller.kd, controller.dt, tau_d=controller.tau_d,
+                   output_limits=controller.output_limits, name="controller", inputs="e", outputs=outputs)
     if isinstance(controller, ct.LTI):
         return _rename_lti(controller, dt, "e", outputs, "controller")
     raise TypeError(
@@ -220,9 +277,9 @@ def _controller_block(controller, dt, outputs):
 def _compensator_block(compensator):
     if compensator is None:
         return None
-    if isinstance(compensator, ct.NonlinearIOSystem) and hasattr(compensator, "compensator"):
-        return compensator_system(None, compensator=compensator.compensator,
-                                  nominal_gain=compensator.nominal_gain, name="compensator")
+    if isinstance(compensator, CompensatorBlock):
+        return CompensatorBlock(compensator.compensator, nominal_gain=compensator.nominal_gain,
+                                model=compensator.model, method=compensator.method, name="compensator")
     if hasattr(compensator, "simulate"):
         return compensator_system(None, compensator=compensator, name="compensator")
     raise TypeError(
@@ -401,22 +458,31 @@ def compiled_support(loop):
     return None
 
 
-def simulate_loop(loop, reference, t=None):
+def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=None, **deprecated):
     """Run a loop in compiled code: the same numbers as
-    ``loop.simulate(t, reference)`` (python-control) to rounding.
+    ``loop.simulate(timepts, inputs)`` (python-control) to rounding.
 
     The hysteresis and compensator steps call the kernels of the models
     (:mod:`hystcomp._kernels`) one sample at a time, the plant and the
     controller are discrete state-space recursions; all in one numba loop.
+    With `initial_state` or `params` the loop runs through
+    :func:`fast_response` (also compiled).
 
     Parameters
     ----------
     loop : Loop
         The loop to run.
-    reference : array_like, shape (n,)
-        Reference samples r[k] at t[k] = t0 + k dt.
-    t : array_like, optional
-        Time vector (for the result; its step must be the loop's dt).
+    timepts : array_like, shape (n,)
+        Time vector, uniformly spaced by the loop's dt (python-control's
+        order: ``timepts, inputs``).  The old calls ``simulate_loop(loop,
+        reference)``, ``simulate_loop(loop, reference, t)`` and the keywords
+        ``reference=``, ``t=`` still work with a DeprecationWarning.
+    inputs : array_like, shape (n,)
+        Reference samples r[k] at timepts[k].
+    initial_state : array_like, optional
+        X0 of ``loop.system``; default the virgin state.
+    params : dict, optional
+        python-control's parameters (``actuator_gain``, ``nominal_gain``).
 
     Returns
     -------
@@ -428,7 +494,7 @@ def simulate_loop(loop, reference, t=None):
     NotImplementedError
         For blocks without a compiled kernel (e.g. a GPI actuator or a
         :class:`~hystcomp.inverses.GPIInverse`): there is no Python
-        fallback here; run ``loop.simulate(t, reference)`` (python-control).
+        fallback here; run ``loop.simulate(timepts, inputs)`` (python-control).
 
     Examples
     --------
@@ -437,8 +503,9 @@ def simulate_loop(loop, reference, t=None):
     >>> from hystcomp.iosys import compensator_system, piezo_stage
     >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
     >>> loop = build_loop("feedforward", act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
-    >>> r = 2 * np.sin(2 * np.pi * 20 * np.arange(5000) * 1e-4)
-    >>> resp = simulate_loop(loop, r)
+    >>> t = np.arange(5000) * 1e-4
+    >>> r = 2 * np.sin(2 * np.pi * 20 * t)
+    >>> resp = simulate_loop(loop, t, r)
     >>> resp.output_labels, resp.outputs.shape
     (['y', 'w', 'v'], (3, 5000))
     >>> w = resp.outputs[1]                    # the compensated actuator follows r exactly
@@ -447,19 +514,17 @@ def simulate_loop(loop, reference, t=None):
     """
     if not isinstance(loop, Loop):
         raise TypeError(f"Parameter loop is {type(loop).__name__}; expected an hystcomp.loops.Loop")
-    r = as_signal(reference, "reference")
-    if t is None:
-        t = np.arange(r.size) * loop.dt
-    else:
-        t = as_signal(t, "t")
-        if t.size != r.size:
-            raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
-        if t.size > 1 and not np.allclose(np.diff(t), loop.dt, rtol=1e-9, atol=0):
-            raise ValueError(f"Parameter t has steps {np.diff(t)[:1]} but the loop's dt is {loop.dt}")
+    t, r = _time_and_reference(loop, timepts, inputs, deprecated, "simulate_loop")
     why = compiled_support(loop)
     if why is not None:
         raise NotImplementedError(f"simulate_loop cannot compile loop {loop.name!r}: {why}; run "
-                                  "loop.simulate(t, reference) (python-control) instead")
+                                  "loop.simulate(timepts, inputs) (python-control) instead")
+    if initial_state is not None or params:
+        resp = fast_response(loop.system, t, r, loop.initial_state() if initial_state is None else initial_state,
+                             params=params)
+        return ct.TimeResponseData(t, resp.outputs, resp.states, r, output_labels=["y", "w", "v"],
+                                   state_labels=resp.state_labels, input_labels=["r"], sysname=loop.name,
+                                   issiso=False, title=f"Compiled loop {loop.name}")
     need_ctrl, need_comp = _NEEDS[loop.scenario]
     h = _spec(loop.hysteresis, "hysteresis")
     c = _spec(loop.compensator.compensator, "compensator") if need_comp else _NONE_SPEC
@@ -468,12 +533,11 @@ def simulate_loop(loop, reference, t=None):
     xp = np.zeros(Ap.shape[0])
     limited, ulo, uhi, pid_dt = False, 0.0, 0.0, 0.0
     if need_ctrl:
-        info = getattr(loop.controller, "_hystcomp", None)
-        if info is not None and info.get("limits") is not None:
-            Ac, Bc, Cc, Dc = info["A"], info["B"], info["C"], info["D"]
+        if isinstance(loop.controller, SaturatedPID):
+            Ac, Bc, Cc, Dc = loop.controller.A, loop.controller.B, loop.controller.C, loop.controller.D
             limited = True
-            ulo, uhi = info["limits"]
-            pid_dt = info["dt"]
+            ulo, uhi = loop.controller.output_limits
+            pid_dt = loop.controller.dt
         else:
             Ac, Bc, Cc, Dc = _ss_arrays(loop.controller)
     else:
@@ -570,7 +634,7 @@ class Comparison:
     >>> from hystcomp.iosys import piezo_stage
     >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
     >>> t = np.arange(2000) * 1e-4
-    >>> result = compare([loop], 2 * np.sin(2 * np.pi * 5 * t), t)
+    >>> result = compare([loop], t, 2 * np.sin(2 * np.pi * 5 * t))
     >>> isinstance(result, Comparison), [row["scenario"] for row in result.rows]
     (True, ['open_loop'])
     >>> print(str(result).splitlines()[0])
@@ -673,17 +737,20 @@ def _run_scenario(loop, t, r, engine, span):
     return row, resp
 
 
-def compare(scenarios, reference, t, engine="auto", progress=None, executor=None):
+def compare(scenarios, timepts=None, inputs=None, engine="auto", progress=None, executor=None, **deprecated):
     """Run scenarios on one reference and tabulate their tracking.
 
     Parameters
     ----------
     scenarios : dict of Loop, or iterable of Loop
         The loops to run (a dict from :func:`build_scenarios`).
-    reference : array_like, shape (n,)
+    timepts : array_like, shape (n,)
+        Uniform time vector with the loops' step (python-control's order:
+        ``timepts, inputs``; the old order ``(reference, t)`` and the
+        keywords ``reference=``, ``t=`` still work with a
+        DeprecationWarning).
+    inputs : array_like, shape (n,)
         Reference samples r.
-    t : array_like, shape (n,)
-        Uniform time vector with the loops' step.
     engine : {"auto", "compiled", "python-control"}
         "auto": :func:`simulate_loop` where the blocks have compiled
         kernels, python-control's simulation otherwise.
@@ -708,7 +775,7 @@ def compare(scenarios, reference, t, engine="auto", progress=None, executor=None
     >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
     >>> loops = build_scenarios(act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
     >>> t = np.arange(2000) * 1e-4
-    >>> result = compare(loops, 2 * np.sin(2 * np.pi * 5 * t), t)
+    >>> result = compare(loops, t, 2 * np.sin(2 * np.pi * 5 * t))
     >>> [row["engine"] for row in result.rows]
     ['compiled', 'compiled']
     >>> bool(result.row("feedforward")["loop_width"] < result.row("open_loop")["loop_width"] / 10)
@@ -716,10 +783,9 @@ def compare(scenarios, reference, t, engine="auto", progress=None, executor=None
     """
     check_choice(engine, "engine", ("auto", "compiled", "python-control"))
     loops = list(scenarios.values()) if isinstance(scenarios, dict) else list(scenarios)
-    r = as_signal(reference, "reference")
-    t = as_signal(t, "t")
-    if t.size != r.size:
-        raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
+    if not loops:
+        raise ValueError("Parameter scenarios is empty; pass at least one Loop")
+    t, r = _time_and_reference(loops[0], timepts, inputs, deprecated, "compare")
     span = float(r.max() - r.min()) or 1.0
     if executor is None:
         results = []
@@ -772,7 +838,7 @@ def plot_comparison(comparison, title=None, scenarios=None, time_window=None):
     >>> from hystcomp.iosys import piezo_stage
     >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
     >>> t = np.arange(1000) * 1e-4
-    >>> fig = plot_comparison(compare([loop], np.sin(2 * np.pi * 10 * t), t), title="open loop")
+    >>> fig = plot_comparison(compare([loop], t, np.sin(2 * np.pi * 10 * t)), title="open loop")
     >>> [ax.get_title() for ax in fig.axes]
     ['tracking', 'tracking error', 'y against r']
     """
