@@ -55,14 +55,12 @@ True
 
 import copyreg
 import pickle
-import warnings
 
 import numpy as np
 
 import control as ct
 
-from ._blocks import (CompensatorBlock, HysteresisBlock, SaturatedPID, _check_dt,  # noqa: F401
-                      _check_protocol, _scalar_input)
+from ._blocks import CompensatorBlock, HysteresisBlock, SaturatedPID, _check_protocol
 from ._validation import as_scalar, check_choice
 from .models import HysteresisModel
 
