@@ -89,13 +89,13 @@ def main(argv=None):
     loop = build_loop("feedback_compensated", model, piezo_stage(), controller=pid(0.0, 40.0, 0.0, DT),
                       compensator=comp, dt=DT)
     r = reference(t, 5.0)
-    simulate_loop(loop, r[:10], t[:10])  # compile
+    simulate_loop(loop, t[:10], r[:10])  # compile
     t_ct = best(lambda: loop.simulate(t, r), args.repeats) / n
     n_fast = 1_000_000
     tf = np.arange(n_fast) * DT
     rf = reference(tf, 5.0)
-    t_fast = best(lambda: simulate_loop(loop, rf, tf), args.repeats) / n_fast
-    d = np.max(np.abs(np.asarray(loop.simulate(t, r).outputs) - np.asarray(simulate_loop(loop, r, t).outputs)))
+    t_fast = best(lambda: simulate_loop(loop, tf, rf), args.repeats) / n_fast
+    d = np.max(np.abs(np.asarray(loop.simulate(t, r).outputs) - np.asarray(simulate_loop(loop, t, r).outputs)))
 
     # 3. a loop the user builds, nested, through fast_response
     h = hysteresis_system(model, dt=DT, name="act", inputs="v", outputs="w")

@@ -45,7 +45,7 @@ def main(argv=None):
                             filter_hz=160.0)
     loops = build_scenarios(actuator, stage, controller=controller, compensator=comp, dt=dt)
     r = reference(t, 5.0)
-    result = compare(loops, r, t)
+    result = compare(loops, t, r)
     print(result)
     os.makedirs(args.out, exist_ok=True)
     fig = Figure(figsize=(13, 5.0), layout="constrained")

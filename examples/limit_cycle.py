@@ -93,7 +93,7 @@ def main(argv=None):
             for a, f in cycles:
                 ax_t.axhline(a, color=color, ls="--", lw=1)
         loop = build_loop("feedback", model, stage, controller=controller, dt=DT)
-        v = simulate_loop(loop, kick(large[1]), t).outputs[2]
+        v = simulate_loop(loop, t, kick(large[1])).outputs[2]
         amp, freq = oscillation(v, t, 2.5)
         for (a, f), ac in zip(cycles, pc):
             if (a, f) != large:

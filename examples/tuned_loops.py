@@ -86,7 +86,7 @@ def main(argv=None):
                 "feedback_compensated", model, stage, controller=c, compensator=comp_fit, dt=DT, name="fit")
     t = np.arange(0, 2.0, DT)
     r = reference(t, 5.0)
-    res = compare(list(loops.values()), r, t)
+    res = compare(list(loops.values()), t, r)
     print("\n5 Hz reference, 2 s:")
     for label, row in zip(loops, res.rows):
         print(f"  {label:44s} RMS {row['rms']:.4f} um ({row['rms_percent']:.2f} % of the span)")

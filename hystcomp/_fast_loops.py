@@ -20,6 +20,7 @@ from numba import njit
 import control as ct
 
 from . import _loop_kernels as _lk
+from ._blocks import CompensatorBlock, HysteresisBlock, SaturatedPID, _check_gain
 from ._kernels import FAM_STOP
 from ._block_specs import _spec
 from ._validation import as_signal
@@ -51,22 +52,22 @@ def _leaf(sys, path):
     if sys.nstates > 0 and (sys.dt in (0, None) or sys.dt is False):
         raise ValueError(f"fast_response compiles discrete-time systems; block {name!r} has dt = {sys.dt!r} "
                          "(discretise it with hystcomp.iosys.discretize or control.sample_system)")
-    info = getattr(sys, "_hystcomp", None)
-    if info is not None and info.get("kind") in ("hysteresis", "compensator"):
-        spec = _spec(info["object"], info["kind"])
+    if isinstance(sys, (HysteresisBlock, CompensatorBlock)):
+        obj = sys.compensator if isinstance(sys, CompensatorBlock) else sys.model
+        spec = _spec(obj, "compensator" if isinstance(sys, CompensatorBlock) else "hysteresis")
         if spec is None:
             raise NotImplementedError(
-                f"fast_response: block {name!r} holds {info['object']!r}, which has no compiled kernel "
+                f"fast_response: block {name!r} holds {obj!r}, which has no compiled kernel "
                 "(GPI models and custom envelopes run only through control.input_output_response)")
         leaf = _Leaf(sys, LEAF_HYST, sys.nstates, 1, 1, name)
         leaf.spec = spec
-        leaf.gain = float(info.get("nominal_gain", 1.0)) if info["kind"] == "compensator" else 1.0
+        leaf.shift = sys.to_model_state(np.zeros(sys.nstates))    # block state + shift = model state
         return leaf
-    if info is not None and info.get("kind") == "pid" and info.get("limits") is not None:
+    if isinstance(sys, SaturatedPID):
         leaf = _Leaf(sys, LEAF_PID_LIMITED, 2, 1, 1, name)
-        leaf.abcd = tuple(np.asarray(info[k], dtype=np.float64) for k in "ABCD")
-        leaf.limits = info["limits"]
-        leaf.pid_dt = float(info["dt"])
+        leaf.abcd = tuple(np.asarray(m, dtype=np.float64) for m in (sys.A, sys.B, sys.C, sys.D))
+        leaf.limits = sys.output_limits
+        leaf.pid_dt = float(sys.dt)
         return leaf
     if isinstance(sys, ct.LTI):
         s = ct.ss(sys)
@@ -82,16 +83,21 @@ def _leaf(sys, path):
         "hystcomp.iosys.pid; run this loop with control.input_output_response")
 
 
-def _flatten(sys, path=""):
-    """(leaves, M, N, O) of a system: leaf inputs U = M Y + N r, outputs y = O Y."""
+def _flatten(sys, path="", chain=()):
+    """(leaves, M, N, O) of a system: leaf inputs U = M Y + N r, outputs y = O Y.
+
+    `chain` holds the params of the enclosing interconnections, innermost
+    first: python-control updates a block's params with them in this order.
+    """
     subs = getattr(sys, "syslist", None)
     if subs is None:
         leaf = _leaf(sys, path)
+        leaf.chain = chain
         return [leaf], np.zeros((leaf.nu, leaf.ny)), np.eye(leaf.nu), np.eye(leaf.ny)
     buf = _buffer(sys.ninputs, f"{path}{sys.name}.inputs")
     leaves, Ms, Ns, Os = [buf], [np.zeros((buf.nu, buf.ny))], [np.eye(buf.nu)], [np.eye(buf.ny)]
     for s in subs:
-        lv, M, N, O = _flatten(s, f"{path}{sys.name}.")
+        lv, M, N, O = _flatten(s, f"{path}{sys.name}.", (dict(getattr(sys, "params", {}) or {}),) + chain)
         leaves += lv
         Ms.append(M)
         Ns.append(N)
@@ -152,7 +158,8 @@ def _order(leaves, M, y_off):
 @njit(cache=True)
 def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
          A, B, C, D, x, h_index, h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh,
-         h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, limits, pid_dt, y_out, x_out):
+         h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out,
+         x_out):
     n = r_in.shape[0]
     Y = np.zeros(M.shape[1])
     U = np.zeros(M.shape[0])
@@ -161,7 +168,8 @@ def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
     bout = np.empty(1)
     binfo = np.zeros(3, dtype=np.int64)
     for k in range(n):
-        x_out[:, k] = x
+        for a in range(x.size):
+            x_out[a, k] = x[a] - shift[a]          # block coordinates (virgin = 0)
         # outputs of the leaves without feedthrough, from their states
         for j in range(kinds.size):
             if kinds[j] == LEAF_LTI and nft[j] == 0:
@@ -188,7 +196,7 @@ def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
                     h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
                     h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
                     st, h_xprev[h], bin_, bout, binfo)
-                Y[y_off[j]] = out
+                Y[y_off[j]] = h_outgain[h] * out
             else:
                 for a in range(ny[j]):
                     s = 0.0
@@ -268,7 +276,18 @@ def _split_state(spec, st):
     return st.copy(), 0.0
 
 
-def fast_response(sys, timepts, inputs, initial_state=0):
+def _block_gains(leaf, params):
+    """(input gain, output gain) of a hystcomp block under python-control's params rules."""
+    p = dict(leaf.sys.params)
+    for outer in leaf.chain:
+        p.update(outer)
+    p.update(params or {})
+    if isinstance(leaf.sys, CompensatorBlock):
+        return _check_gain(p.get("nominal_gain"), "nominal_gain", True), 1.0
+    return 1.0, _check_gain(p.get("actuator_gain"), "actuator_gain", False)
+
+
+def fast_response(sys, timepts, inputs, initial_state=0, params=None):
     """Simulate a discrete-time interconnection in one compiled loop.
 
     The same numbers as ``control.input_output_response(sys, timepts, inputs,
@@ -289,8 +308,12 @@ def fast_response(sys, timepts, inputs, initial_state=0):
     inputs : array_like, shape (ninputs, n) or (n,) for one input
         External inputs, signal by time (python-control's layout).
     initial_state : float or array_like, shape (sys.nstates,)
-        Initial state as python-control takes it (a scalar fills every state; pass
-        ``hystcomp.iosys.initial_state(sys)`` for virgin hystcomp blocks).
+        Initial state as python-control takes it (a scalar fills every state; 0 is
+        the virgin state of hystcomp blocks, see ``hystcomp.iosys.initial_state``).
+    params : dict, optional
+        python-control's parameters: ``actuator_gain`` of the hysteresis blocks and
+        ``nominal_gain`` of the compensators (merged as ``input_output_response``
+        merges them).
 
     Returns
     -------
@@ -316,9 +339,13 @@ def fast_response(sys, timepts, inputs, initial_state=0):
     >>> loop = ct.interconnect([err, ctrl, act, piezo_stage(dt=1e-4)], inplist="r", outlist="y")
     >>> t = np.arange(500) * 1e-4
     >>> r = np.sin(2 * np.pi * 20 * t)
-    >>> fast = fast_response(loop, t, r, initial_state(loop))
-    >>> slow = ct.input_output_response(loop, t, r, initial_state(loop))
+    >>> fast = fast_response(loop, t, r)
+    >>> slow = ct.input_output_response(loop, t, r)
     >>> bool(np.allclose(fast.outputs, slow.outputs, rtol=0, atol=1e-12))
+    True
+    >>> sweep = fast_response(loop, t, r, params={"actuator_gain": 0.8})
+    >>> bool(np.allclose(sweep.outputs, ct.input_output_response(loop, t, r, params={"actuator_gain": 0.8}).outputs,
+    ...                  rtol=0, atol=1e-12))
     True
     """
     leaves, M, N, O = _flatten(sys)
@@ -364,7 +391,12 @@ def fast_response(sys, timepts, inputs, initial_state=0):
     h_kl, h_kr, h_kh = (np.zeros(nh, np.int64) for _ in range(3))
     h_r, h_p = np.zeros((nh, maxr)), np.zeros((nh, maxr))
     h_pl, h_pr, h_ph = (np.zeros((nh, maxprm)) for _ in range(3))
-    h_p0, h_hs, h_lo, h_hi, h_xprev, h_gain = (np.zeros(nh) for _ in range(6))
+    h_p0, h_hs, h_lo, h_hi, h_xprev, h_gain, h_outgain = (np.zeros(nh) for _ in range(7))
+    shift = np.zeros(xo)
+    for leaf in leaves:
+        if leaf.kind == LEAF_HYST:
+            shift[leaf.x_off:leaf.x_off + leaf.nx] = leaf.shift
+    x = x + shift                           # model coordinates inside the compiled loop
     h_state = np.zeros((nh, maxs))
     limits, pid_dt = np.zeros((nl, 2)), np.zeros(nl)
     kinds, nft = np.zeros(nl, np.int64), np.zeros(nl, np.int64)
@@ -386,7 +418,7 @@ def fast_response(sys, timepts, inputs, initial_state=0):
             h_ns[h] = kst.size
             h_state[h, :kst.size] = kst
             h_xprev[h] = xprev
-            h_gain[h] = leaf.gain
+            h_gain[h], h_outgain[h] = _block_gains(leaf, params)
         else:
             a, b, c, d = leaf.abcd
             A[xs, xs], B[xs, us], C[ys, xs], D[ys, us] = a, b, c, d
@@ -399,7 +431,7 @@ def fast_response(sys, timepts, inputs, initial_state=0):
          u_off, np.array([lf.nu for lf in leaves], np.int64), y_off, np.array([lf.ny for lf in leaves], np.int64),
          np.ascontiguousarray(M), np.ascontiguousarray(N), np.ascontiguousarray(O), A, B, C, D, x, h_index,
          h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi, h_state,
-         h_ns, h_xprev, h_gain, limits, pid_dt, y_out, x_out)
+         h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out, x_out)
     return ct.TimeResponseData(t, y_out, x_out, u, output_labels=sys.output_labels,
                                state_labels=sys.state_labels, input_labels=sys.input_labels,
                                sysname=sys.name, issiso=sys.ninputs == 1 and sys.noutputs == 1)

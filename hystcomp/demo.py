@@ -385,7 +385,7 @@ def run(args, echo=print, progress_stream=None):
     bar = progress_bar(total=len(work), desc="loops", enabled=not quiet, file=progress_stream, unit="loop")
     for f, key, label, lp, r in work:
         bar.set_postfix_str(f"{f:g} Hz {key}", refresh=False)
-        res = compare([lp], r, t, engine=args.engine)
+        res = compare([lp], t, r, engine=args.engine)
         row = dict(res.rows[0])
         fc = {"pid_raw_safe": fc_raw}.get(key, fc_comp if key in ("pid_raw_fast", "pid_compensated", "two_dof")
                                            else float("nan"))

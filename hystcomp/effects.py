@@ -276,15 +276,13 @@ class LinearStage:
                              f"frequency {0.5 / dt} Hz of dt = {dt}")
         # prewarp so that the discrete mode sits exactly at `frequency`
         w = 2.0 / dt * math.tan(math.pi * f * dt)
-        Ac = np.array([[0.0, 1.0], [-w * w, -2 * z * w]])
-        Bc = np.array([0.0, w * w])
-        Cc = np.array([1.0, 0.0])
-        # bilinear rule: (I - A dt/2)^-1 (I + A dt/2), ... (as scipy.signal.cont2discrete "bilinear")
-        M = np.linalg.inv(np.eye(2) - 0.5 * dt * Ac)
-        Ad = M @ (np.eye(2) + 0.5 * dt * Ac)
-        Bd = M @ (dt * Bc)
-        Cd = Cc @ M
-        Dd = 0.5 * Cc @ Bd
+        import control as ct
+
+        # bilinear rule (I - A dt/2)^-1 (I + A dt/2), ...: python-control's
+        # sample_system (scipy.signal.cont2discrete "bilinear") of the prewarped mode
+        sysd = ct.sample_system(ct.ss([[0.0, 1.0], [-w * w, -2 * z * w]], [[0.0], [w * w]], [[1.0, 0.0]], 0.0),
+                                dt, method="bilinear")
+        Ad, Bd, Cd, Dd = sysd.A, sysd.B[:, 0], sysd.C[0], sysd.D[0, 0]
         return cls(Ad, Bd, Cd, float(Dd), dt, kind="resonance",
                    parameters={"frequency": f, "damping": z})
 

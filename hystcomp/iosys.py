@@ -2,12 +2,16 @@
 
 Every model (PI, StopPI, GPI, mGPI, ...) and every compensator (analytic
 inverse, :class:`~hystcomp.inverses.ExactInverse`, ...) becomes a discrete
-:class:`control.NonlinearIOSystem` whose state is the model's explicit
-state (the operator outputs / play positions):
+:class:`control.NonlinearIOSystem` subclass whose state is the model's
+explicit state (play positions ``play[i]``, operator outputs
+``operator[i]``, ...) minus its virgin state, so that python-control's
+default ``X0 = 0`` is the virgin state:
 
-* :func:`hysteresis_system` -- ``w[k] = model(v[k]; x[k])``, ``x[k+1]`` the
-  state after ``v[k]`` (feedthrough: the output answers the current input);
-* :func:`compensator_system` -- ``v[k] = inverse(k_nom * u[k]; x[k])``;
+* :func:`hysteresis_system` -- a :class:`HysteresisBlock`,
+  ``w[k] = actuator_gain * model(v[k]; x[k])``, ``x[k+1]`` the state after
+  ``v[k]`` (feedthrough: the output answers the current input);
+* :func:`compensator_system` -- a :class:`CompensatorBlock`,
+  ``v[k] = inverse(nominal_gain * u[k]; x[k])``;
 * :func:`piezo_stage`, :func:`pid`, :func:`discretize` -- a plant and a
   controller for the loops of :mod:`hystcomp.loops`;
 * :func:`interconnect` -- :func:`control.interconnect` after a wiring check
@@ -20,11 +24,14 @@ model that follows it works; PI, mGPI, StopPI and exact inverses call the
 compiled kernels directly (fast paths that run the same kernel with the same
 arguments as ``simulate``, hence the same numbers).
 
-Model data stay in the blocks' step objects, never in python-control's
-``params`` (an interconnection merges the params of all its subsystems into
-one dict).  Blocks, loops and their results pickle with plain :mod:`pickle`
-(so an executor can run them in other processes): the step functions are
-module-level objects, and, because python-control 0.10's
+Model data stay in the blocks, never in python-control's ``params`` (an
+interconnection merges the params of all its subsystems into one dict); the
+params hold only gains worth sweeping: ``actuator_gain`` of the hysteresis
+blocks and ``nominal_gain`` of the compensators, as in
+``ct.input_output_response(loop, t, r, params={"actuator_gain": 1.1})``.
+Blocks, loops and their results pickle with plain :mod:`pickle` (so an
+executor can run them in other processes): the blocks' update and output
+are methods of module-level classes, and, because python-control 0.10's
 :class:`control.StateSpace` stores two lambdas and so cannot be pickled,
 importing this module registers :mod:`copyreg` reducers that rebuild a
 StateSpace from its matrices, timebase and signal names and an
@@ -42,24 +49,25 @@ Examples
 >>> resp = ct.input_output_response(block, t, v)
 >>> bool(np.allclose(resp.outputs, model.simulate(v), rtol=0, atol=1e-12))
 True
+>>> block.state_labels
+['play[0]', 'play[1]']
 """
 
 import copyreg
 import pickle
-import warnings
 
 import numpy as np
 
 import control as ct
 
-from . import _kernels as _k
+from ._blocks import CompensatorBlock, HysteresisBlock, SaturatedPID, _check_protocol
 from ._validation import as_scalar, check_choice
-from .models import GPI, MGPI, HysteresisModel, StopPI
+from .models import HysteresisModel
 
 __all__ = [
     "hysteresis_system", "compensator_system", "mean_gain", "initial_state",
     "piezo_stage", "pid", "discretize", "check_wiring", "interconnect",
-    "WiringError",
+    "WiringError", "HysteresisBlock", "CompensatorBlock", "SaturatedPID",
 ]
 
 
@@ -140,188 +148,14 @@ class WiringError(ValueError):
     """
 
 
-# ----------------------------------------------------------------------------
-# step functions: (output, update) on an explicit state, as module-level
-# callable objects so that blocks pickle with plain pickle
-# ----------------------------------------------------------------------------
-def _scalar_input(u):
-    return float(np.asarray(u).reshape(-1)[0])
-
-
-class _Steps:
-    """Output and update of a block: ``output(t, x, u, params)`` and
-    ``update(t, x, u, params)`` for python-control, from ``run(x, u) ->
-    (y, new_state)`` of a subclass; ``gain`` scales the input first."""
-
-    gain = 1.0
-
-    def output(self, t, x, u, params):
-        return self.run(x, self.gain * _scalar_input(u))[0]
-
-    def update(self, t, x, u, params):
-        return self.run(x, self.gain * _scalar_input(u))[1]
-
-
-class _GenericSteps(_Steps):
-    """Any object with the simulate protocol, one sample at a time."""
-
-    def __init__(self, obj, gain=1.0):
-        self.obj, self.gain = obj, float(gain)
-
-    def run(self, x, u):
-        with warnings.catch_warnings():
-            # clipped targets are actuator saturation inside a loop; a warning
-            # per step would flood the console
-            warnings.simplefilter("ignore")
-            return self.obj.simulate(np.array([u]), initial_state=x, return_state=True)
-
-
-class _KernelSteps(_Steps):
-    """Models with a compiled forward kernel (symmetric and asymmetric mGPI,
-    PI, StopPI): the same kernel with the same arguments as
-    ``model.simulate`` on a one-sample record, so the block equals the model
-    bit for bit."""
-
-    def __init__(self, model, gain=1.0):
-        self.model, self.gain = model, float(gain)
-        if isinstance(model, MGPI) and model.symmetric:
-            self.mode = "play"
-            self.args = (model._r, model._p, model.p0) + tuple(model.envelope_left.kernel_spec())
-        elif isinstance(model, MGPI):
-            kl, pl = model.envelope_left.kernel_spec()
-            kr, pr = model.envelope_right.kernel_spec()
-            self.mode = "mplay"
-            self.args = (np.concatenate([[0.0], model._r]), np.concatenate([[model.p0], model._p]),
-                         kl, pl, kr, pr)
-        else:
-            self.mode = "stop"
-            self.args = (model._r, model._p, model.p0)
-
-    @staticmethod
-    def supports(model):
-        """True when `model` has a compiled forward kernel this class runs."""
-        if isinstance(model, MGPI):
-            kinds = [model.envelope_left.kernel_spec()[0]]
-            if not model.symmetric:
-                kinds.append(model.envelope_right.kernel_spec()[0])
-            return _k.CUSTOM not in kinds
-        return isinstance(model, StopPI)
-
-    def run(self, x, u):
-        y = np.empty(1)
-        v = np.array([float(u)])
-        if self.mode == "play":
-            r, p, p0, kind, prm = self.args
-            s = np.array(x, dtype=np.float64)
-            _k.play_sum(v, r, p, p0, s, kind, prm, y)
-        elif self.mode == "mplay":
-            r, p, kl, pl, kr, pr = self.args
-            s = np.array(x, dtype=np.float64)
-            _k.mplay_sum(v, r, p, s, kl, pl, kr, pr, y)
-        else:
-            r, p, p0 = self.args
-            s = np.array(x, dtype=np.float64)
-            w = s[:-1].copy()
-            s[-1] = _k.stop_sum(v, r, p, p0, w, s[-1], y)
-            s[:-1] = w
-        if not np.isfinite(y[0]):
-            # the kernels count inputs outside an envelope's domain as +-inf;
-            # say so here rather than let python-control see NaN (which it
-            # reports as an algebraic loop)
-            self.model._check_input_domain(v)
-            raise ValueError(f"Block input {u!r} gives the non-finite output {y[0]} from the state {x!r} "
-                             f"of {self.model!r}")
-        return y, s
-
-
-class _ExactInverseSteps(_Steps):
-    """An ExactInverse: the compiled solver on one sample, with the
-    arguments ``ExactInverse.simulate`` passes it."""
-
-    def __init__(self, comp, gain):
-        self.comp, self.gain = comp, float(gain)
-
-    def run(self, x, u):
-        comp = self.comp
-        fam = comp._fam
-        lo, hi = comp.input_limits
-        st = np.array(x, dtype=np.float64)
-        xprev = st[0]
-        kstate = st[1:-1].copy() if fam == _k.FAM_STOP else st[1:].copy()
-        out = np.empty(1)
-        info = np.zeros(3, dtype=np.int64)
-        xlast = _k.inverse_solve(fam, np.array([u]), comp._r, comp._p, comp._p0, kstate, xprev,
-                                 comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph, comp._hscale,
-                                 lo, hi, 1e-14, out, info)
-        if fam == _k.FAM_STOP:
-            new = np.concatenate([[xlast], kstate, [xlast]])
-        else:
-            new = np.concatenate([[xlast], kstate])
-        return out, new
-
-
-def _steps_for(obj, gain=1.0):
-    """The fastest step object for a model or compensator."""
-    from .inverses import ExactInverse
-
-    if isinstance(obj, ExactInverse):
-        return _ExactInverseSteps(obj, gain)
-    if isinstance(obj, HysteresisModel) and _KernelSteps.supports(obj):
-        return _KernelSteps(obj, gain)
-    return _GenericSteps(obj, gain)
-
-
-def _check_dt(dt):
-    """A block's sampling time: True (inherit) or a positive finite float.
-
-    hystcomp blocks are discrete: their update is the state after one
-    sample, which python-control would take as a derivative if dt were 0.
-    """
-    if dt is True:
-        return dt
-    bad = dt is None or isinstance(dt, (bool, str)) or not np.isscalar(dt)
-    if not bad:
-        try:
-            bad = not (np.isfinite(float(dt)) and float(dt) > 0)
-        except (TypeError, ValueError):
-            bad = True
-    if bad:
-        raise ValueError(
-            f"Parameter dt is {dt!r} but should be True (inherit the loop's sampling time) or a positive "
-            "finite sampling time in seconds; hystcomp blocks are discrete-time (dt = 0 or None would make "
-            "python-control read the state update as a derivative)"
-        )
-    return float(dt)
-
-
-def _block(kind, obj, steps, n_states, dt, name, inputs, outputs, extra=None):
-    sys = ct.nlsys(steps.update, steps.output, states=n_states, inputs=inputs, outputs=outputs,
-                   dt=_check_dt(dt), name=name)
-    # read by hystcomp.loops (compiled loops, default initial states, wiring
-    # checks); python-control ignores them
-    sys._hystcomp = dict(kind=kind, object=obj, feedthrough=True, default_state=obj.default_state(),
-                         **(extra or {}))
-    return sys
-
-
-def _check_protocol(obj, name):
-    for attr in ("simulate", "n_states", "default_state"):
-        if not hasattr(obj, attr):
-            raise TypeError(
-                f"Parameter {name} is {obj!r}, which has no {attr!r}; expected an object with "
-                "simulate(x, initial_state=None, return_state=False), n_states and default_state()"
-            )
-
-
-def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w"):
-    """A hysteresis model as a discrete python-control system.
+def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w", actuator_gain=1.0):
+    """A hysteresis model as a discrete python-control system (a :class:`HysteresisBlock`).
 
     ``w[k]`` is the model's output for the input ``v[k]`` from the state
-    ``x[k]`` (the model's explicit state, e.g. the play positions of eq. 49),
-    and ``x[k+1]`` is the state after ``v[k]``; so
+    ``x[k]`` (the model's explicit state, e.g. the play positions of eq. 49,
+    minus its virgin state), and ``x[k+1]`` is the state after ``v[k]``; so
     ``ct.input_output_response(block, t, v).outputs == model.simulate(v)``
-    (from the virgin state, pass ``X0=initial_state(block)`` when it is not
-    zero).
+    from python-control's default ``X0 = 0``.
 
     Parameters
     ----------
@@ -335,10 +169,14 @@ def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w"):
         Block name (python-control makes one up if None).
     inputs, outputs : str
         Signal names of the actuator input and output.
+    actuator_gain : float
+        Gain on the output, the default of ``params["actuator_gain"]``
+        (sweep it with ``input_output_response(..., params=...)``).
 
     Returns
     -------
-    control.NonlinearIOSystem
+    HysteresisBlock
+        A :class:`control.NonlinearIOSystem`.
 
     Examples
     --------
@@ -350,9 +188,11 @@ def hysteresis_system(model, dt=True, name=None, inputs="v", outputs="w"):
     >>> sys = hysteresis_system(m, name="actuator")
     >>> sys.nstates, sys.input_labels, sys.output_labels
     (20, ['v'], ['w'])
+    >>> sys.model is m, sys.state_labels[:2]
+    (True, ['play[0]', 'play[1]'])
     """
     _check_protocol(model, "model")
-    return _block("hysteresis", model, _steps_for(model), model.n_states, dt, name, inputs, outputs)
+    return HysteresisBlock(model, actuator_gain=actuator_gain, dt=dt, name=name, inputs=inputs, outputs=outputs)
 
 
 def mean_gain(model, input_range, n_samples=2001):
@@ -393,7 +233,7 @@ def mean_gain(model, input_range, n_samples=2001):
 
 def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=None, inputs="u",
                        outputs="v", input_range=None, compensator=None):
-    """An inverse compensator as a discrete python-control system.
+    """An inverse compensator as a discrete python-control system (a :class:`CompensatorBlock`).
 
     ``v[k] = C(k_nom * u[k]; x[k])`` with C the inverse of `model` (exact or
     analytic) and ``k_nom`` the nominal gain: the compensated actuator
@@ -407,7 +247,7 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
         ``model.exact_inverse()`` (per-sample solve) or ``model.inverse()``
         (Krejci-Kuhnen for PI, the thesis's eqs. 54-58 for mGPI).
     nominal_gain : None, float or "auto"
-        ``k_nom``; None means 1.  A bare inverse turns the actuator into a
+        ``k_nom``, the default of ``params["nominal_gain"]``; None means 1.  A bare inverse turns the actuator into a
         unit gain, while the raw actuator has its own mean gain (about 2.5 in
         the demo): at equal controller gains the compensated loop would then
         be slower.  "auto" uses :func:`mean_gain` over `input_range`, so
@@ -426,8 +266,9 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
 
     Returns
     -------
-    control.NonlinearIOSystem
-        With ``nominal_gain`` and ``compensator`` attributes.
+    CompensatorBlock
+        A :class:`control.NonlinearIOSystem` with the read-only attributes
+        ``compensator``, ``model``, ``method`` and ``nominal_gain``.
 
     Targets the model cannot reach are clipped (actuator saturation) without
     a warning per step.
@@ -464,16 +305,18 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
         k = mean_gain(model, input_range)
     else:
         k = as_scalar(nominal_gain, "nominal_gain", positive=True)
-    sys = _block("compensator", compensator, _steps_for(compensator, k), compensator.n_states, dt, name,
-                 inputs, outputs, extra=dict(nominal_gain=k, method=method_used))
-    sys.nominal_gain = k
-    sys.compensator = compensator
-    return sys
+    return CompensatorBlock(compensator, nominal_gain=k, model=model, method=method_used, dt=dt, name=name,
+                            inputs=inputs, outputs=outputs)
 
 
 def initial_state(sys):
     """X0 for ``ct.input_output_response``: every hystcomp block in its
-    default (virgin) state, every other state 0.
+    virgin state, every other state 0.
+
+    In the blocks' coordinates the virgin state is 0, so this is all zeros
+    except where a model parks its plays at +-inf (an envelope whose range
+    does not contain 0); python-control's default ``X0 = 0`` is then right
+    too.
 
     Parameters
     ----------
@@ -493,9 +336,8 @@ def initial_state(sys):
     """
     subs = getattr(sys, "syslist", None)
     if subs is None:
-        info = getattr(sys, "_hystcomp", None)
-        if info is not None:
-            return np.asarray(info["default_state"], dtype=np.float64).copy()
+        if isinstance(sys, (HysteresisBlock, CompensatorBlock)):
+            return sys.initial_state()
         return np.zeros(sys.nstates)
     if not subs:
         return np.zeros(0)
@@ -531,8 +373,8 @@ def discretize(sys, dt, name=None):
     Examples
     --------
     >>> p = discretize(piezo_stage(), 1e-4)
-    >>> p.dt, p.input_labels, p.output_labels, p.name
-    (0.0001, ['w'], ['y'], 'stage')
+    >>> p.dt, p.input_labels, p.output_labels, p.state_labels, p.name
+    (0.0001, ['w'], ['y'], ['position', 'velocity'], 'stage')
     """
     dt = as_scalar(dt, "dt", positive=True)
     if not isinstance(sys, ct.LTI):
@@ -544,10 +386,9 @@ def discretize(sys, dt, name=None):
             f"System {sys.name!r} is already discrete with dt = {sys.dt}, not {dt}; "
             "build it in continuous time and discretise it once"
         )
-    ss = ct.ss(sys)
-    d = ct.sample_system(ss, dt, method="zoh", name=name or sys.name)
-    return ct.ss(d.A, d.B, d.C, d.D, dt, inputs=sys.input_labels, outputs=sys.output_labels,
-                 name=name or sys.name)
+    # python-control's zero-order hold (scipy's cont2discrete), signal and
+    # state names copied
+    return ct.sample_system(ct.ss(sys), dt, method="zoh", name=name or sys.name, copy_names=True)
 
 
 def piezo_stage(gain=1.0, natural_freq_hz=300.0, damping=0.05, dt=None, name="stage", inputs="w",
@@ -590,29 +431,6 @@ def piezo_stage(gain=1.0, natural_freq_hz=300.0, damping=0.05, dt=None, name="st
     return sys if dt is None else discretize(sys, dt)
 
 
-class _SaturatedPID:
-    """Output and update of :func:`pid` with output limits (conditional
-    integration), as a module-level object so that the block pickles."""
-
-    def __init__(self, C, D, a, dt, lo, hi):
-        self.c0, self.c1, self.d = float(C[0, 0]), float(C[0, 1]), float(D[0, 0])
-        self.a, self.dt, self.lo, self.hi = a, dt, lo, hi
-
-    def _raw(self, x, e):
-        return self.c0 * x[0] + self.c1 * x[1] + self.d * e
-
-    def output(self, t, x, u, params):
-        e = _scalar_input(u)
-        return np.array([min(max(self._raw(x, e), self.lo), self.hi)])
-
-    def update(self, t, x, u, params):
-        e = _scalar_input(u)
-        uu = self._raw(x, e)
-        hold = (uu > self.hi and e > 0.0) or (uu < self.lo and e < 0.0)
-        integ = x[0] if hold else x[0] + self.dt * e
-        return np.array([integ, self.a * x[1] + (1.0 - self.a) * e])
-
-
 def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", outputs="u"):
     """A discrete PID controller with a filtered derivative.
 
@@ -639,8 +457,9 @@ def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", 
 
     Returns
     -------
-    control.StateSpace or control.NonlinearIOSystem
-        States ``[I, f]``.
+    control.StateSpace or SaturatedPID
+        States ``[I, f]``; a :class:`SaturatedPID` (a
+        :class:`control.NonlinearIOSystem`) with `output_limits`.
 
     Examples
     --------
@@ -652,38 +471,29 @@ def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", 
     dt = as_scalar(dt, "dt", positive=True)
     tau = 10.0 * dt if tau_d is None else as_scalar(tau_d, "tau_d", positive=True)
     a = float(np.exp(-dt / tau))
-    A = np.array([[1.0, 0.0], [0.0, a]])
-    B = np.array([[dt], [1.0 - a]])
-    C = np.array([[ki, -kd / tau]])
-    D = np.array([[kp + ki * dt + kd / tau]])
-    info = dict(kind="pid", kp=kp, ki=ki, kd=kd, dt=dt, tau_d=tau, A=A, B=B, C=C, D=D,
-                feedthrough=True, default_state=np.zeros(2), limits=None)
     if output_limits is None:
-        sys = ct.ss(A, B, C, D, dt, inputs=inputs, outputs=outputs, name=name, states=["I", "f"])
-        sys._hystcomp = info
-        return sys
+        A = np.array([[1.0, 0.0], [0.0, a]])
+        B = np.array([[dt], [1.0 - a]])
+        C = np.array([[ki, -kd / tau]])
+        D = np.array([[kp + ki * dt + kd / tau]])
+        return ct.ss(A, B, C, D, dt, inputs=inputs, outputs=outputs, name=name, states=["I", "f"])
     try:
         lo, hi = float(output_limits[0]), float(output_limits[1])
     except (TypeError, IndexError, ValueError):
         raise ValueError(f"Parameter output_limits is {output_limits!r} but should be (lo, hi)") from None
     if not lo < hi:
         raise ValueError(f"Parameter output_limits is {output_limits!r} but should satisfy lo < hi")
-    info["limits"] = (lo, hi)
-
-    steps = _SaturatedPID(C, D, a, dt, lo, hi)
-    sys = ct.nlsys(steps.update, steps.output, states=["I", "f"], inputs=inputs, outputs=outputs, dt=dt,
-                   name=name)
-    sys._hystcomp = info
-    return sys
+    return SaturatedPID(kp, ki, kd, dt, tau, (lo, hi), name=name, inputs=inputs, outputs=outputs)
 
 
 # ----------------------------------------------------------------------------
 # wiring checks
 # ----------------------------------------------------------------------------
 def _feedthrough(sys):
-    info = getattr(sys, "_hystcomp", None)
-    if info is not None:
-        return bool(info.get("feedthrough", True))
+    if isinstance(sys, (HysteresisBlock, CompensatorBlock)):
+        return True
+    if isinstance(sys, SaturatedPID):
+        return bool(np.any(sys.D != 0))
     if isinstance(sys, ct.LTI):
         d = ct.ss(sys).D
         return bool(np.any(np.asarray(d) != 0))

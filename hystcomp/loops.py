@@ -35,15 +35,12 @@ Examples
 >>> sorted(loops)
 ['feedback', 'feedback_compensated', 'feedforward', 'open_loop', 'two_dof']
 >>> t = np.arange(2000) * dt
->>> result = compare(loops, 2 * np.sin(2 * np.pi * 5 * t), t)
+>>> result = compare(loops, t, 2 * np.sin(2 * np.pi * 5 * t))
 >>> bool(result.row("feedforward")["rms"] < result.row("open_loop")["rms"] / 10)
 True
 """
 
-import csv
-import sys
-import time
-from concurrent.futures import as_completed
+import warnings
 
 import numpy as np
 
@@ -52,8 +49,8 @@ import control as ct
 from . import _loop_kernels as _lk
 from ._validation import as_scalar, as_signal, check_choice
 from .iosys import (
-    WiringError, _feedthrough, compensator_system, discretize, hysteresis_system, initial_state,
-    interconnect, pid,
+    CompensatorBlock, SaturatedPID, WiringError, compensator_system, discretize, hysteresis_system,
+    initial_state, interconnect, pid,
 )
 from ._block_specs import _NONE_SPEC, _spec, _ss_arrays
 from ._fast_loops import fast_response
@@ -102,7 +99,7 @@ class Loop:
         Sampling time of every block.
     hysteresis : HysteresisModel
         The actuator model.
-    compensator : control.NonlinearIOSystem or None
+    compensator : hystcomp.iosys.CompensatorBlock or None
         The compensator block (``.compensator``, ``.nominal_gain``).
     controller, plant : python-control systems or None
         Discrete; signals renamed to the loop's.
@@ -138,17 +135,25 @@ class Loop:
         """X0 of :attr:`system`: blocks in their virgin states."""
         return initial_state(self.system)
 
-    def simulate(self, t, reference, engine="python-control"):
-        """Response to a reference: ``engine="python-control"`` runs
-        :func:`control.input_output_response`, ``"compiled"``
-        :func:`simulate_loop`.
+    def simulate(self, timepts=None, inputs=None, initial_state=None, params=None, engine="python-control",
+                 **deprecated):
+        """Response to a reference, in python-control's argument order:
+        ``engine="python-control"`` runs :func:`control.input_output_response`,
+        ``"compiled"`` :func:`simulate_loop`.
 
         Parameters
         ----------
-        t : array_like, shape (n,)
+        timepts : array_like, shape (n,)
             Uniform time vector with the loop's step `dt`.
-        reference : array_like, shape (n,)
-            Reference samples r[k].
+        inputs : array_like, shape (n,)
+            Reference samples r[k].  (The old keywords ``t=`` and
+            ``reference=`` still work, with a DeprecationWarning.)
+        initial_state : array_like, optional
+            X0 of :attr:`system`; default the virgin state
+            (:meth:`initial_state`).
+        params : dict, optional
+            python-control's parameters, e.g. ``{"actuator_gain": 1.1}`` or
+            ``{"nominal_gain": 2.0}`` for sweeps.
         engine : {"python-control", "compiled"}, optional
             Who simulates; both give the same numbers to rounding, the
             compiled loop about a thousand times faster.
@@ -170,16 +175,65 @@ class Loop:
         >>> b = loop.simulate(t, r, engine="compiled").outputs
         >>> a.shape, bool(np.allclose(a, b, rtol=0, atol=1e-12))
         ((3, 40), True)
+        >>> c = loop.simulate(t, r, params={"actuator_gain": 1.2}).outputs   # w scaled by 1.2
+        >>> bool(np.allclose(c[1], 1.2 * a[1], rtol=0, atol=1e-12))
+        True
         """
         check_choice(engine, "engine", ("python-control", "compiled"))
+        t, r = _time_and_reference(self, timepts, inputs, deprecated, "Loop.simulate")
         if engine == "compiled":
-            return simulate_loop(self, reference, t)
-        t = as_signal(t, "t")
-        r = as_signal(reference, "reference")
-        return ct.input_output_response(self.system, t, r, X0=self.initial_state())
+            return simulate_loop(self, t, r, initial_state=initial_state, params=params)
+        x0 = self.initial_state() if initial_state is None else initial_state
+        return ct.input_output_response(self.system, t, r, initial_state=x0, params=params)
 
     def __repr__(self):
         return f"Loop({self.scenario!r}, name={self.name!r}, dt={self.dt})"
+
+
+def _is_time(t, n, dt):
+    return t.size == n and (n < 2 or np.allclose(np.diff(t), dt, rtol=1e-9, atol=0))
+
+
+def _time_and_reference(loop, timepts, inputs, deprecated, where):
+    """(t, r) from python-control's order ``(timepts, inputs)``, accepting the
+    old forms ``(reference)``, ``(reference, t)`` and the keywords ``t=``,
+    ``reference=`` with a DeprecationWarning."""
+    old = {k: deprecated.pop(k) for k in ("t", "reference") if k in deprecated}
+    if deprecated:
+        raise TypeError(f"{where}() got unexpected keyword arguments {sorted(deprecated)}")
+    msg = (f"{where}: the order is now python-control's (timepts, inputs[, initial_state]); "
+           "{what} is deprecated")
+    if old:
+        if "reference" in old:
+            if inputs is not None:
+                raise TypeError(f"{where}() got both inputs and the old keyword reference")
+            if "t" not in old and timepts is not None:
+                old["t"] = timepts
+            inputs = old["reference"]
+            timepts = old.get("t")
+        else:
+            timepts = old["t"]
+        warnings.warn(msg.format(what="the keywords t= and reference="), DeprecationWarning, stacklevel=3)
+    elif inputs is None and timepts is not None:
+        warnings.warn(msg.format(what="passing the reference alone"), DeprecationWarning, stacklevel=3)
+        inputs, timepts = timepts, None
+    if inputs is None:
+        raise TypeError(f"{where}() missing the arguments timepts and inputs (the time vector and the "
+                        "reference samples)")
+    r = as_signal(inputs, "inputs")
+    if timepts is None:
+        return np.arange(r.size) * loop.dt, r
+    t = as_signal(timepts, "timepts")
+    if t.size != r.size:
+        raise ValueError(f"Parameter timepts has {t.size} samples but inputs has {r.size}")
+    if not _is_time(t, t.size, loop.dt) and _is_time(r, r.size, loop.dt):
+        # the old order (reference, t): unambiguous since the first is no time vector
+        warnings.warn(msg.format(what="the order (reference, t)"), DeprecationWarning, stacklevel=3)
+        t, r = r, t
+    if t.size > 1 and not _is_time(t, t.size, loop.dt):
+        raise ValueError(f"Parameter timepts has steps from {np.diff(t).min()!r} to {np.diff(t).max()!r} "
+                         f"but the loop's dt is {loop.dt}")
+    return t, r
 
 
 def _rename_lti(sys, dt, inputs, outputs, name):
@@ -196,19 +250,18 @@ def _rename_lti(sys, dt, inputs, outputs, name):
             f"build it at dt = {dt} (continuous systems are discretised automatically)"
         )
     s = ct.ss(sys)
-    return ct.ss(s.A, s.B, s.C, s.D, dt, inputs=inputs, outputs=outputs, name=name)
+    return ct.ss(s.A, s.B, s.C, s.D, dt, inputs=inputs, outputs=outputs, name=name, states=s.state_labels)
 
 
 def _controller_block(controller, dt, outputs):
-    info = getattr(controller, "_hystcomp", None)
-    if info is not None and info.get("kind") == "pid":
-        if not np.isclose(info["dt"], dt, rtol=1e-12, atol=0):
+    if isinstance(controller, SaturatedPID):
+        if not np.isclose(controller.dt, dt, rtol=1e-12, atol=0):
             raise WiringError(
-                f"timebase mismatch: the controller {controller.name!r} has dt = {info['dt']} but the "
+                f"timebase mismatch: the controller {controller.name!r} has dt = {controller.dt} but the "
                 f"loop runs at dt = {dt}; build it with pid(..., dt={dt})"
             )
-        return pid(info["kp"], info["ki"], info["kd"], info["dt"], tau_d=info["tau_d"],
-                   output_limits=info["limits"], name="controller", inputs="e", outputs=outputs)
+        return pid(controller.kp, controller.ki, controller.kd, controller.dt, tau_d=controller.tau_d,
+                   output_limits=controller.output_limits, name="controller", inputs="e", outputs=outputs)
     if isinstance(controller, ct.LTI):
         return _rename_lti(controller, dt, "e", outputs, "controller")
     raise TypeError(
@@ -220,9 +273,9 @@ def _controller_block(controller, dt, outputs):
 def _compensator_block(compensator):
     if compensator is None:
         return None
-    if isinstance(compensator, ct.NonlinearIOSystem) and hasattr(compensator, "compensator"):
-        return compensator_system(None, compensator=compensator.compensator,
-                                  nominal_gain=compensator.nominal_gain, name="compensator")
+    if isinstance(compensator, CompensatorBlock):
+        return CompensatorBlock(compensator.compensator, nominal_gain=compensator.nominal_gain,
+                                model=compensator.model, method=compensator.method, name="compensator")
     if hasattr(compensator, "simulate"):
         return compensator_system(None, compensator=compensator, name="compensator")
     raise TypeError(
@@ -401,22 +454,31 @@ def compiled_support(loop):
     return None
 
 
-def simulate_loop(loop, reference, t=None):
+def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=None, **deprecated):
     """Run a loop in compiled code: the same numbers as
-    ``loop.simulate(t, reference)`` (python-control) to rounding.
+    ``loop.simulate(timepts, inputs)`` (python-control) to rounding.
 
     The hysteresis and compensator steps call the kernels of the models
     (:mod:`hystcomp._kernels`) one sample at a time, the plant and the
     controller are discrete state-space recursions; all in one numba loop.
+    With `initial_state` or `params` the loop runs through
+    :func:`fast_response` (also compiled).
 
     Parameters
     ----------
     loop : Loop
         The loop to run.
-    reference : array_like, shape (n,)
-        Reference samples r[k] at t[k] = t0 + k dt.
-    t : array_like, optional
-        Time vector (for the result; its step must be the loop's dt).
+    timepts : array_like, shape (n,)
+        Time vector, uniformly spaced by the loop's dt (python-control's
+        order: ``timepts, inputs``).  The old calls ``simulate_loop(loop,
+        reference)``, ``simulate_loop(loop, reference, t)`` and the keywords
+        ``reference=``, ``t=`` still work with a DeprecationWarning.
+    inputs : array_like, shape (n,)
+        Reference samples r[k] at timepts[k].
+    initial_state : array_like, optional
+        X0 of ``loop.system``; default the virgin state.
+    params : dict, optional
+        python-control's parameters (``actuator_gain``, ``nominal_gain``).
 
     Returns
     -------
@@ -428,7 +490,7 @@ def simulate_loop(loop, reference, t=None):
     NotImplementedError
         For blocks without a compiled kernel (e.g. a GPI actuator or a
         :class:`~hystcomp.inverses.GPIInverse`): there is no Python
-        fallback here; run ``loop.simulate(t, reference)`` (python-control).
+        fallback here; run ``loop.simulate(timepts, inputs)`` (python-control).
 
     Examples
     --------
@@ -437,8 +499,9 @@ def simulate_loop(loop, reference, t=None):
     >>> from hystcomp.iosys import compensator_system, piezo_stage
     >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
     >>> loop = build_loop("feedforward", act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
-    >>> r = 2 * np.sin(2 * np.pi * 20 * np.arange(5000) * 1e-4)
-    >>> resp = simulate_loop(loop, r)
+    >>> t = np.arange(5000) * 1e-4
+    >>> r = 2 * np.sin(2 * np.pi * 20 * t)
+    >>> resp = simulate_loop(loop, t, r)
     >>> resp.output_labels, resp.outputs.shape
     (['y', 'w', 'v'], (3, 5000))
     >>> w = resp.outputs[1]                    # the compensated actuator follows r exactly
@@ -447,19 +510,17 @@ def simulate_loop(loop, reference, t=None):
     """
     if not isinstance(loop, Loop):
         raise TypeError(f"Parameter loop is {type(loop).__name__}; expected an hystcomp.loops.Loop")
-    r = as_signal(reference, "reference")
-    if t is None:
-        t = np.arange(r.size) * loop.dt
-    else:
-        t = as_signal(t, "t")
-        if t.size != r.size:
-            raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
-        if t.size > 1 and not np.allclose(np.diff(t), loop.dt, rtol=1e-9, atol=0):
-            raise ValueError(f"Parameter t has steps {np.diff(t)[:1]} but the loop's dt is {loop.dt}")
+    t, r = _time_and_reference(loop, timepts, inputs, deprecated, "simulate_loop")
     why = compiled_support(loop)
     if why is not None:
         raise NotImplementedError(f"simulate_loop cannot compile loop {loop.name!r}: {why}; run "
-                                  "loop.simulate(t, reference) (python-control) instead")
+                                  "loop.simulate(timepts, inputs) (python-control) instead")
+    if initial_state is not None or params:
+        resp = fast_response(loop.system, t, r, loop.initial_state() if initial_state is None else initial_state,
+                             params=params)
+        return ct.TimeResponseData(t, resp.outputs, resp.states, r, output_labels=["y", "w", "v"],
+                                   state_labels=resp.state_labels, input_labels=["r"], sysname=loop.name,
+                                   issiso=False, title=f"Compiled loop {loop.name}")
     need_ctrl, need_comp = _NEEDS[loop.scenario]
     h = _spec(loop.hysteresis, "hysteresis")
     c = _spec(loop.compensator.compensator, "compensator") if need_comp else _NONE_SPEC
@@ -468,12 +529,11 @@ def simulate_loop(loop, reference, t=None):
     xp = np.zeros(Ap.shape[0])
     limited, ulo, uhi, pid_dt = False, 0.0, 0.0, 0.0
     if need_ctrl:
-        info = getattr(loop.controller, "_hystcomp", None)
-        if info is not None and info.get("limits") is not None:
-            Ac, Bc, Cc, Dc = info["A"], info["B"], info["C"], info["D"]
+        if isinstance(loop.controller, SaturatedPID):
+            Ac, Bc, Cc, Dc = loop.controller.A, loop.controller.B, loop.controller.C, loop.controller.D
             limited = True
-            ulo, uhi = info["limits"]
-            pid_dt = info["dt"]
+            ulo, uhi = loop.controller.output_limits
+            pid_dt = loop.controller.dt
         else:
             Ac, Bc, Cc, Dc = _ss_arrays(loop.controller)
     else:
@@ -494,321 +554,5 @@ def simulate_loop(loop, reference, t=None):
                                title=f"Compiled loop {loop.name}")
 
 
-# ----------------------------------------------------------------------------
-# comparison
-# ----------------------------------------------------------------------------
-def loop_width(reference, output, n_bins=100):
-    """Width of the output-vs-reference loop.
-
-    The largest spread of the tracking error ``y - r`` among samples whose
-    reference values fall in the same bin (`n_bins` bins over the
-    reference's span): 0 for perfect tracking, the vertical width of the
-    hysteresis loop for an uncompensated actuator (a pure lag also opens
-    the loop).
-
-    Parameters
-    ----------
-    reference : array_like, shape (n,)
-        Reference samples r.
-    output : array_like, shape (n,)
-        Output samples y.
-    n_bins : int, optional
-        Number of bins over the reference's span (default 100).
-
-    Returns
-    -------
-    float
-        The loop width, in output units.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> r = np.sin(np.linspace(0, 4 * np.pi, 4001))
-    >>> round(loop_width(r, r + 0.1 * np.sign(np.gradient(r))), 6)
-    0.2
-    """
-    r = as_signal(reference, "reference")
-    e = as_signal(output, "output") - r
-    span = r.max() - r.min()
-    if span == 0:
-        return float(e.max() - e.min())
-    idx = np.minimum(((r - r.min()) / span * n_bins).astype(np.int64), n_bins - 1)
-    hi = np.full(n_bins, -np.inf)
-    lo = np.full(n_bins, np.inf)
-    np.maximum.at(hi, idx, e)
-    np.minimum.at(lo, idx, e)
-    ok = np.isfinite(hi)
-    return float(np.max(hi[ok] - lo[ok]))
-
-
-_FIELDS = ("scenario", "label", "engine", "rms", "max", "rms_percent", "max_percent", "loop_width",
-           "loop_width_percent", "seconds")
-
-
-class Comparison:
-    """Result of :func:`compare`.
-
-    Printing it shows the table; every parameter is kept as the attribute
-    of the same name.
-
-    Parameters
-    ----------
-    rows : list of dict
-        One per scenario: ``scenario``, ``label``, ``engine``, ``rms``,
-        ``max`` (tracking error y - r), ``rms_percent``, ``max_percent`` (of
-        the reference span), ``loop_width`` (:func:`loop_width`),
-        ``loop_width_percent``, ``seconds`` (simulation wall time).
-    responses : dict
-        scenario name -> :class:`control.TimeResponseData`.
-    reference, t : ndarray
-        The reference and its time vector.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp import PI
-    >>> from hystcomp.iosys import piezo_stage
-    >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
-    >>> t = np.arange(2000) * 1e-4
-    >>> result = compare([loop], 2 * np.sin(2 * np.pi * 5 * t), t)
-    >>> isinstance(result, Comparison), [row["scenario"] for row in result.rows]
-    (True, ['open_loop'])
-    >>> print(str(result).splitlines()[0])
-    scenario               engine                RMS       max    RMS %    max %     width  width %
-    """
-
-    def __init__(self, rows, responses, reference, t):
-        self.rows = rows
-        self.responses = responses
-        self.reference = reference
-        self.t = t
-
-    def row(self, name):
-        """The table row of one scenario.
-
-        Parameters
-        ----------
-        name : str
-            Scenario (loop) name.
-
-        Returns
-        -------
-        dict
-            See :class:`Comparison`'s `rows`.
-
-        Raises
-        ------
-        KeyError
-            If no row has that name (the message lists the names).
-
-        Examples
-        --------
-        >>> c = Comparison([{"scenario": "open_loop", "rms": 0.5}], {}, None, None)
-        >>> c.row("open_loop")["rms"]
-        0.5
-        """
-        for row in self.rows:
-            if row["scenario"] == name:
-                return row
-        raise KeyError(f"no scenario {name!r}; have {[r['scenario'] for r in self.rows]}")
-
-    def __str__(self):
-        head = (f"{'scenario':22s} {'engine':15s} {'RMS':>9s} {'max':>9s} {'RMS %':>8s} {'max %':>8s} "
-                f"{'width':>9s} {'width %':>8s}")
-        lines = [head, "-" * len(head)]
-        for row in self.rows:
-            lines.append(
-                f"{row['scenario']:22s} {row['engine']:15s} {row['rms']:9.4g} {row['max']:9.4g} "
-                f"{row['rms_percent']:8.3g} {row['max_percent']:8.3g} {row['loop_width']:9.4g} "
-                f"{row['loop_width_percent']:8.3g}"
-            )
-        return "\n".join(lines)
-
-    def to_csv(self, path, extra=None):
-        """Write the table as CSV.
-
-        Parameters
-        ----------
-        path : str or path-like
-            The CSV file to write (overwritten).
-        extra : dict, optional
-            Constant columns put before the table's (e.g. the model's name).
-
-        Examples
-        --------
-        >>> import os, tempfile
-        >>> row = dict(scenario="open_loop", label="open loop", engine="compiled", rms=0.1,
-        ...            max=0.2, rms_percent=2.5, max_percent=5.0, loop_width=0.3,
-        ...            loop_width_percent=7.5, seconds=0.01)
-        >>> path = os.path.join(tempfile.mkdtemp(), "loops.csv")
-        >>> Comparison([row], {}, None, None).to_csv(path, extra={"model": "PI"})
-        >>> print(open(path).read().splitlines()[1])
-        PI,open_loop,open loop,compiled,0.1,0.2,2.5,5.0,0.3,7.5,0.01
-        """
-        extra = dict(extra or {})
-        with open(path, "w", newline="") as fh:
-            writer = csv.DictWriter(fh, fieldnames=list(extra) + list(_FIELDS))
-            writer.writeheader()
-            for row in self.rows:
-                writer.writerow({**extra, **{k: row[k] for k in _FIELDS}})
-
-
-def _run_scenario(loop, t, r, engine, span):
-    """One row of :func:`compare` and its response (module level, so that
-    an executor can run it in another process)."""
-    eng = engine
-    if eng == "auto":
-        eng = "compiled" if compiled_support(loop) is None else "python-control"
-    t0 = time.perf_counter()
-    resp = loop.simulate(t, r, engine=eng)
-    secs = time.perf_counter() - t0
-    y = np.asarray(resp.outputs)[0]
-    e = y - r
-    rms = float(np.sqrt(np.mean(e * e)))
-    mx = float(np.max(np.abs(e)))
-    width = loop_width(r, y)
-    row = dict(scenario=loop.name, label=_LABELS.get(loop.scenario, loop.scenario), engine=eng,
-               rms=rms, max=mx, rms_percent=100 * rms / span, max_percent=100 * mx / span,
-               loop_width=width, loop_width_percent=100 * width / span, seconds=secs)
-    return row, resp
-
-
-def compare(scenarios, reference, t, engine="auto", progress=None, executor=None):
-    """Run scenarios on one reference and tabulate their tracking.
-
-    Parameters
-    ----------
-    scenarios : dict of Loop, or iterable of Loop
-        The loops to run (a dict from :func:`build_scenarios`).
-    reference : array_like, shape (n,)
-        Reference samples r.
-    t : array_like, shape (n,)
-        Uniform time vector with the loops' step.
-    engine : {"auto", "compiled", "python-control"}
-        "auto": :func:`simulate_loop` where the blocks have compiled
-        kernels, python-control's simulation otherwise.
-    progress : callable, optional
-        Called as ``progress(done, total, name)`` after each scenario.
-    executor : concurrent.futures.Executor, optional
-        Runs the scenarios in parallel (a ``ProcessPoolExecutor``, or
-        ``distributed.Client(...).get_executor()`` for dask); None runs them
-        one after the other.  The loops and results pickle, and the rows are
-        identical either way (in the scenarios' order).
-
-    Returns
-    -------
-    Comparison
-        Table rows and each scenario's :class:`control.TimeResponseData`.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp import PI
-    >>> from hystcomp.iosys import compensator_system, piezo_stage
-    >>> act = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
-    >>> loops = build_scenarios(act, piezo_stage(), compensator=compensator_system(act), dt=1e-4)
-    >>> t = np.arange(2000) * 1e-4
-    >>> result = compare(loops, 2 * np.sin(2 * np.pi * 5 * t), t)
-    >>> [row["engine"] for row in result.rows]
-    ['compiled', 'compiled']
-    >>> bool(result.row("feedforward")["loop_width"] < result.row("open_loop")["loop_width"] / 10)
-    True
-    """
-    check_choice(engine, "engine", ("auto", "compiled", "python-control"))
-    loops = list(scenarios.values()) if isinstance(scenarios, dict) else list(scenarios)
-    r = as_signal(reference, "reference")
-    t = as_signal(t, "t")
-    if t.size != r.size:
-        raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size}")
-    span = float(r.max() - r.min()) or 1.0
-    if executor is None:
-        results = []
-        for j, loop in enumerate(loops):
-            results.append(_run_scenario(loop, t, r, engine, span))
-            if progress is not None:
-                progress(j + 1, len(loops), loop.name)
-    else:
-        if not hasattr(executor, "submit"):
-            raise TypeError(f"Parameter executor is {executor!r}; expected a concurrent.futures.Executor "
-                            "(an object with submit()) or None")
-        futures = [executor.submit(_run_scenario, loop, t, r, engine, span) for loop in loops]
-        index = {f: j for j, f in enumerate(futures)}
-        done = 0
-        for f in as_completed(futures):
-            done += 1
-            if progress is not None:
-                progress(done, len(loops), loops[index[f]].name)
-        results = [f.result() for f in futures]
-    rows = [row for row, _ in results]
-    responses = {loop.name: resp for loop, (_, resp) in zip(loops, results)}
-    return Comparison(rows, responses, r, t)
-
-
-def plot_comparison(comparison, title=None, scenarios=None, time_window=None):
-    """Tracking, tracking error and y-vs-r loops of a :class:`Comparison`.
-
-    Parameters
-    ----------
-    comparison : Comparison
-        The result of :func:`compare`.
-    title : str, optional
-        Figure title.
-    scenarios : iterable of str, optional
-        Scenarios to draw, in this order; default every row.
-    time_window : (float, float), optional
-        (t0, t1) limits of the two time panels (the loops panel shows every
-        sample).
-
-    Returns
-    -------
-    matplotlib.figure.Figure
-        Three panels: reference and outputs in time, errors y - r in time,
-        output against reference.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp import PI
-    >>> from hystcomp.iosys import piezo_stage
-    >>> loop = build_loop("open_loop", PI([1.0], [0.5], p0=1.0), piezo_stage(), dt=1e-4)
-    >>> t = np.arange(1000) * 1e-4
-    >>> fig = plot_comparison(compare([loop], np.sin(2 * np.pi * 10 * t), t), title="open loop")
-    >>> [ax.get_title() for ax in fig.axes]
-    ['tracking', 'tracking error', 'y against r']
-    """
-    from .plotting import new_figure
-
-    fig, axes = new_figure(1, 3, size=(15, 4.6))
-    t, r = comparison.t, comparison.reference
-    names = [row["scenario"] for row in comparison.rows] if scenarios is None else list(scenarios)
-    axes[0].plot(t, r, "k--", lw=1.2, label="reference r")
-    for name in names:
-        row = comparison.row(name)
-        y = np.asarray(comparison.responses[name].outputs)[0]
-        lab = f"{row['label']} ({row['rms_percent']:.2g} % RMS)"
-        axes[0].plot(t, y, lw=0.9, label=lab)
-        axes[1].plot(t, y - r, lw=0.9, label=row["label"])
-        axes[2].plot(r, y, lw=0.7, label=row["label"])
-    lim = [r.min(), r.max()]
-    axes[2].plot(lim, lim, "k--", lw=1, label="y = r")
-    axes[0].set(xlabel="time t [s]", ylabel="position y", title="tracking")
-    axes[1].set(xlabel="time t [s]", ylabel="error y - r", title="tracking error")
-    axes[2].set(xlabel="reference r", ylabel="position y", title="y against r")
-    axes[0].legend(fontsize=7, loc="upper right")
-    axes[2].legend(fontsize=7, loc="upper left")
-    for ax in axes:
-        ax.grid(True, alpha=0.3)
-    if time_window is not None:
-        axes[0].set_xlim(*time_window)
-        axes[1].set_xlim(*time_window)
-    if title:
-        fig.suptitle(title)
-    return fig
-
-
-def _stderr_progress(done, total, name):  # pragma: no cover - cosmetic
-    bar = "#" * int(30 * done / total)
-    sys.stderr.write(f"\r[{bar:30s}] {done}/{total} {name:24s}")
-    if done == total:
-        sys.stderr.write("\n")
-    sys.stderr.flush()
+# the comparison lives in its own module (imported last: it imports from this one)
+from ._comparison import Comparison, compare, loop_width, plot_comparison  # noqa: E402,F401

@@ -91,7 +91,7 @@ def _one_seed(seed, true_model, plant, controller, reference, t, dt, input_range
         fit = fit_weights(v_id, y, **fit_options)
     model_error = fit.model.simulate(v_id) + fit.offset - y_true
     loops = _loops_with(fit.model, true_model, plant, controller, dt, input_range)
-    result = compare(loops, reference, t)
+    result = compare(loops, t, reference)
     row = dict(seed=int(seed), model_rms=float(np.sqrt(np.mean(model_error ** 2))))
     for r in result.rows:
         row[r["scenario"]] = r["rms_percent"]
@@ -291,7 +291,7 @@ def mismatch_study(true_model, plant, controller, reference, t, input_range, n_s
             fit_options.update(model="mgpi", envelope=true_model.envelope_left)
         else:
             fit_options.update(model="pi")
-    nominal_result = compare(_loops_with(true_model, true_model, plant, controller, dt, (lo, hi)), r, t)
+    nominal_result = compare(_loops_with(true_model, true_model, plant, controller, dt, (lo, hi)), t, r)
     nominal = {row["scenario"]: row["rms_percent"] for row in nominal_result.rows}
     args = (true_model, plant, controller, r, t, dt, (lo, hi), v_id, noise, dict(fit_options))
     if executor is None:

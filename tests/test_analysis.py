@@ -114,7 +114,7 @@ def test_limit_cycle_predicted_and_confirmed_by_simulation():
     assert len(cplt.lines) == 2                       # the Nyquist curve and -1/N(A) are drawn
     loop = build_loop("feedback", model, piezo_stage(), controller=controller, dt=DT)
     t = np.arange(0, 3.0, DT)
-    v = simulate_loop(loop, np.where(t < 0.01, 0.5, 0.0), t).outputs[2]
+    v = simulate_loop(loop, t, np.where(t < 0.01, 0.5, 0.0)).outputs[2]
     sim_amp, sim_freq = _oscillation(v, t, 2.5)
     assert sim_amp == pytest.approx(amp, rel=0.10)
     assert sim_freq == pytest.approx(freq, rel=0.10)
@@ -130,11 +130,11 @@ def test_two_limit_cycles_small_one_unstable():
     (small, _), (large, f_large) = sorted(cycles)
     loop = build_loop("feedback", model, piezo_stage(), controller=controller, dt=DT)
     t = np.arange(0, 3.0, DT)
-    quiet = simulate_loop(loop, np.where(t < 0.01, 0.5, 0.0), t).outputs[2]
+    quiet = simulate_loop(loop, t, np.where(t < 0.01, 0.5, 0.0)).outputs[2]
     assert np.ptp(quiet[t > 2.5]) < 1e-6                # a small kick dies out
     # a kick that drives v well beyond the small cycle: the loop settles on the large one
     kick = np.where(t < 0.03, 10.0, 0.0) * np.sin(2 * np.pi * f_large * t)
-    loud = simulate_loop(loop, kick, t).outputs[2]
+    loud = simulate_loop(loop, t, kick).outputs[2]
     sim_amp, sim_freq = _oscillation(loud, t, 2.5)
     assert sim_amp == pytest.approx(large, rel=0.10) and sim_freq == pytest.approx(f_large, rel=0.10)
 

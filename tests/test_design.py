@@ -86,7 +86,7 @@ def test_designed_controller_runs_in_the_loop_builders_compiled():
     t = np.arange(3000) * DT
     r = np.sin(2 * np.pi * 5 * t)
     a = loop.simulate(t, r).outputs
-    b = simulate_loop(loop, r, t).outputs
+    b = simulate_loop(loop, t, r).outputs
     np.testing.assert_allclose(a, b, rtol=0, atol=1e-9)   # the compiled loop's documented agreement
     # a 60 Hz crossover leaves |S(j 2 pi 5 Hz)| ~ 5/60: RMS error ~ 0.083 x 0.707 = 0.059 (bound +35 %)
     assert float(np.sqrt(np.mean((b[0, 1500:] - r[1500:]) ** 2))) < 0.08
@@ -130,5 +130,5 @@ def test_state_feedback_output_form_tracks_with_the_hysteretic_actuator():
                       compensator=comp, dt=DT)
     t = np.arange(4000) * DT
     r = np.where(t > 0.01, 1.0, 0.0)
-    y = simulate_loop(loop, r, t).outputs[0]
+    y = simulate_loop(loop, t, r).outputs[0]
     assert abs(y[-1] - 1.0) < 1e-3        # integral action: no static error after 0.4 s (tau ~ 5 ms)

@@ -87,3 +87,28 @@ def test_errors_name_the_block():
         fast_response(h, T, np.ones((2, T.size)))
     with pytest.raises(ValueError, match="timepts"):
         fast_response(h, T * 2, R)
+
+
+def test_params_and_shifted_virgin_state_through_the_compiled_loop():
+    # an envelope with gamma(0) != 0: virgin plays at -0.5, block states shifted by it;
+    # X0 = 0 is virgin in both engines, and params sweep the two gains in both
+    model = MGPI([0.5, 1.0, 1.5], [0.3, 0.2, 0.1], 1.0, envelope=Tanh(5.0, 0.4, 0.2))
+    assert np.all(model.default_state() == -0.5)
+    h = hysteresis_system(model, dt=DT, name="act", inputs="v", outputs="w")
+    comp = compensator_system(model, nominal_gain=1.5, dt=DT, name="comp", inputs="u", outputs="v")
+    c = pid(0.0, 60.0, 0.0, dt=DT, inputs="e", outputs="u")
+    err = ct.summing_junction(["r", "-y"], "e", name="err")
+    loop = interconnect([err, c, comp, h, piezo_stage(dt=DT, inputs="w", outputs="y")],
+                        inplist=["r"], outlist=["y", "w", "v"], name="loop")
+    assert loop.params == {"actuator_gain": 1.0, "nominal_gain": 1.5}
+    _same(loop, x0=0)
+    for params in ({"actuator_gain": 0.7}, {"nominal_gain": 2.0}, {"actuator_gain": 1.3, "nominal_gain": 1.1}):
+        fast = fast_response(loop, T, R, params=params)
+        slow = ct.input_output_response(loop, T, R, params=params)
+        # as in _same: equal to rounding (1e-12 of the signals' size)
+        scale = max(1.0, np.abs(slow.outputs).max())
+        np.testing.assert_allclose(fast.outputs, slow.outputs, rtol=0, atol=1e-12 * scale)
+    base = fast_response(loop, T, R)
+    assert np.max(np.abs(fast_response(loop, T, R, params={"actuator_gain": 0.7}).outputs - base.outputs)) > 1e-3
+    with pytest.raises(ValueError, match="nominal_gain"):
+        fast_response(loop, T, R, params={"nominal_gain": 0.0})

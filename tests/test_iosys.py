@@ -59,7 +59,7 @@ def test_block_chunked_equals_model(name):
     # state after sample 149 = the model's state after v[:150]
     _, s150 = model.simulate(v[:150], return_state=True)
     x_last = block._rhs(t[149], r1.states[:, -1], v[149:150])
-    assert np.array_equal(x_last, s150)
+    assert np.array_equal(block.to_model_state(x_last), s150)
     y2 = _response(block, t[150:], v[150:], x0=x_last)
     assert np.max(np.abs(np.concatenate([r1.outputs, y2]) - model.simulate(v))) <= 1e-12
 
@@ -131,15 +131,90 @@ def test_output_function_is_pure():
     assert np.array_equal(y1, y2) and np.array_equal(x, np.zeros(model.n_states))
 
 
-def test_params_are_not_used():
-    # two blocks in one interconnection keep their own models (closures)
+def test_params_hold_gains_not_models():
+    # two blocks in one interconnection keep their own models; params hold
+    # only the actuator gain (python-control merges the params of all blocks)
     a = hysteresis_system(PI([1.0], [1.0], p0=1.0), name="a", inputs="v", outputs="w1")
     b = hysteresis_system(PI([1.0], [3.0], p0=2.0), name="b", inputs="w1", outputs="w2")
     sys = interconnect([a, b], inplist=["v"], outlist=["w2"])
     t, v = _input(100)
     expected = PI([1.0], [3.0], p0=2.0).simulate(PI([1.0], [1.0], p0=1.0).simulate(v))
     assert np.max(np.abs(_response(sys, t, v) - expected)) <= 1e-12
-    assert a.params == {} and b.params == {}
+    assert a.params == {"actuator_gain": 1.0} and b.params == {"actuator_gain": 1.0}
+    assert sys.params == {"actuator_gain": 1.0}
+
+
+def test_virgin_state_is_x0_zero():
+    # Tanh(10, 0.2, 0.05) does not pass through 0: the virgin plays sit at
+    # gamma^-1(0) = -0.25, and before the blocks took the virgin state as
+    # their origin, input_output_response without X0 started from plays at
+    # 0 and was off by 1.6 here (1.15 in the case)
+    model = MGPI(R, DENS, 1.0, envelope=Tanh(10.0, 0.2, 0.05))
+    assert np.all(model.default_state() == -0.25)
+    t, v = _input()
+    old_way = model.simulate(v, initial_state=np.zeros(model.n_states))
+    assert np.max(np.abs(old_way - model.simulate(v))) > 1.0           # the offset the fix removes
+    for block in (hysteresis_system(model, dt=DT), hysteresis_system(model, dt=DT).copy("b2")):
+        y = np.asarray(ct.input_output_response(block, t, v).outputs)
+        # (z - 0.25) + 0.25 rounds: 1e-12 on outputs of size ~10
+        assert np.max(np.abs(y - model.simulate(v))) <= 1e-12
+        assert np.array_equal(initial_state(block), np.zeros(model.n_states))
+    comp = compensator_system(model, dt=DT)
+    u = 2.0 * np.sin(2 * np.pi * 4 * t)
+    vc = np.asarray(ct.input_output_response(comp, t, u).outputs).reshape(-1)
+    # exact inverse solves to ~1e-14 relative
+    assert np.max(np.abs(model.simulate(vc) - u)) <= 1e-10
+    # states convert both ways; the chunked run continues where the first stopped
+    block = hysteresis_system(model, dt=DT)
+    r1 = ct.input_output_response(block, t[:150], v[:150])
+    _, s150 = model.simulate(v[:150], return_state=True)
+    x150 = block._rhs(t[149], r1.states[:, -1], v[149:150])
+    np.testing.assert_allclose(block.to_model_state(x150), s150, rtol=0, atol=1e-12)
+    np.testing.assert_allclose(block.from_model_state(s150), x150, rtol=0, atol=1e-12)
+    y2 = np.asarray(ct.input_output_response(block, t[150:], v[150:], x150).outputs)
+    assert np.max(np.abs(np.concatenate([r1.outputs, y2]) - model.simulate(v))) <= 1e-12
+
+
+def test_named_states_and_documented_attributes():
+    m = _models()
+    assert hysteresis_system(m["PI"]).state_labels == [f"play[{i}]" for i in range(R.size)]
+    assert hysteresis_system(m["MGPI asym"]).state_labels == [f"operator[{i}]" for i in range(R.size + 1)]
+    assert hysteresis_system(m["StopPI"]).state_labels[-2:] == [f"stop[{R.size - 1}]", "input_prev"]
+    block = hysteresis_system(m["MGPI sym"], name="act")
+    assert block.model is m["MGPI sym"] and isinstance(block, ct.NonlinearIOSystem)
+    comp = compensator_system(m["PI"], nominal_gain=2.0)
+    assert comp.state_labels[0] == "command_prev" and comp.state_labels[1] == "model_play[0]"
+    assert comp.model is m["PI"] and comp.method == "exact" and comp.nominal_gain == 2.0
+    for attr, value in (("model", None), ("compensator", None), ("nominal_gain", 3.0)):
+        with pytest.raises(AttributeError):
+            setattr(comp, attr, value)
+    with pytest.raises(AttributeError):
+        block.model = None
+    assert not hasattr(block, "_hystcomp") and not hasattr(comp, "_hystcomp")
+
+
+def test_params_sweep_actuator_and_nominal_gain():
+    model = _models()["MGPI sym"]
+    t, v = _input(300)
+    block = hysteresis_system(model, dt=DT)
+    w = model.simulate(v)
+    for k in (0.8, 1.0, 1.25):
+        y = np.asarray(ct.input_output_response(block, t, v, params={"actuator_gain": k}).outputs)
+        assert np.max(np.abs(y - k * w)) <= 1e-12        # one product per sample
+    # the default comes back after a sweep (python-control keeps params per call)
+    assert np.max(np.abs(np.asarray(ct.input_output_response(block, t, v).outputs) - w)) <= 1e-12
+    assert hysteresis_system(model, actuator_gain=0.5).params == {"actuator_gain": 0.5}
+    comp = compensator_system(model, dt=DT)
+    u = np.sin(2 * np.pi * 4 * t)
+    for k in (1.5, 2.5):
+        vc = np.asarray(ct.input_output_response(comp, t, u, params={"nominal_gain": k}).outputs).reshape(-1)
+        assert np.max(np.abs(model.simulate(vc) - k * u)) < 1e-10   # the inverse solves to ~1e-14 rel.
+    with pytest.raises(ValueError, match=r"params\['actuator_gain'\] is nan"):
+        ct.input_output_response(block, t, v, params={"actuator_gain": float("nan")})
+    with pytest.raises(ValueError, match=r"params\['nominal_gain'\] is -1"):
+        ct.input_output_response(comp, t, u, params={"nominal_gain": -1})
+    with pytest.raises(ValueError, match="actuator_gain"):
+        hysteresis_system(model, actuator_gain="big")
 
 
 def test_piezo_stage_and_discretize():
@@ -153,6 +228,12 @@ def test_piezo_stage_and_discretize():
     assert d.dt == 1e-4 and d.input_labels == ["w"] and d.output_labels == ["y"]
     assert np.allclose(np.abs(d.poles()), np.exp(-0.05 * wn * 1e-4), rtol=1e-12)
     assert np.all(d.D == 0)
+    assert d.state_labels == ["position", "velocity"] and d.name == "stage"
+    # zero-order hold: A_d = expm(A dt), B_d = int_0^dt expm(A s) ds B (van Loan's block exponential)
+    from scipy.linalg import expm
+    M = expm(np.block([[g.A, g.B], [np.zeros((1, 3))]]) * 1e-4)
+    np.testing.assert_allclose(d.A, M[:2, :2], rtol=1e-12, atol=1e-12)
+    np.testing.assert_allclose(d.B, M[:2, 2:], rtol=1e-12, atol=1e-12 * np.abs(M[:2, 2:]).max())
     with pytest.raises(WiringError, match="already discrete"):
         discretize(d, 2e-4)
 
@@ -237,3 +318,20 @@ def test_bad_arguments_name_themselves():
         hysteresis_system(object())
     with pytest.raises(ValueError, match="natural_freq_hz"):
         piezo_stage(natural_freq_hz=-3)
+
+
+@pytest.mark.parametrize("f,zeta,dt", [(20.0, 0.1, 1e-3), (300.0, 0.05, 1e-4), (450.0, 0.7, 1e-3)])
+def test_linear_stage_resonance_is_the_prewarped_bilinear_rule(f, zeta, dt):
+    # LinearStage.resonance goes through ct.sample_system(..., "bilinear"): the
+    # same matrices as the bilinear rule written out (Tustin with the mode
+    # prewarped to sit at f), to 1e-12 relative
+    from hystcomp.effects import LinearStage
+
+    w = 2.0 / dt * np.tan(np.pi * f * dt)
+    A = np.array([[0.0, 1.0], [-w * w, -2 * zeta * w]])
+    M = np.linalg.inv(np.eye(2) - 0.5 * dt * A)
+    Ad, Bd = M @ (np.eye(2) + 0.5 * dt * A), M @ (dt * np.array([0.0, w * w]))
+    Cd = np.array([1.0, 0.0]) @ M
+    st = LinearStage.resonance(f, zeta, dt)
+    for got, want in ((st.A, Ad), (st.B, Bd), (st.C, Cd), (st.D, 0.5 * Cd @ np.array([0.0, w * w]) * dt)):
+        np.testing.assert_allclose(got, want, rtol=0, atol=1e-12 * max(1.0, np.abs(want).max()))

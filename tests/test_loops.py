@@ -47,7 +47,7 @@ def test_compiled_loops_equal_python_control(case):
     t, r = _reference()
     for name, loop in loops.items():
         slow = np.asarray(loop.simulate(t, r).outputs)
-        fast = np.asarray(simulate_loop(loop, r, t).outputs)
+        fast = np.asarray(simulate_loop(loop, t, r).outputs)
         assert fast.shape == slow.shape == (3, N)
         # the 1e-9: both run the same kernels; only the order of the
         # few products of the linear blocks differs (measured <= 1e-11)
@@ -64,8 +64,8 @@ def test_gpi_actuator_has_no_compiled_path_and_compare_falls_back():
     t, r = _reference(100, f=5.0)
     r = 0.3 * r
     with pytest.raises(NotImplementedError, match="GPI.*loop.simulate"):
-        simulate_loop(loop, r, t)
-    res = compare([loop], r, t)
+        simulate_loop(loop, t, r)
+    res = compare([loop], t, r)
     assert res.rows[0]["engine"] == "python-control"
     assert np.array_equal(np.asarray(res.responses[loop.name].outputs), np.asarray(loop.simulate(t, r).outputs))
 
@@ -78,14 +78,14 @@ def test_feedforward_and_nominal_gain_claims_small():
     r = 5.0 * np.sin(2 * np.pi * 5 * t) / (1 + 0.1 * t)
     comp = compensator_system(model, nominal_gain="auto", input_range=(-2.0, 2.0))
     ctrl = pid(0.0, 40.0, 0.0, DT)
-    res = compare(build_scenarios(model, piezo_stage(), controller=ctrl, compensator=comp, dt=DT), r, t,
+    res = compare(build_scenarios(model, piezo_stage(), controller=ctrl, compensator=comp, dt=DT), t, r,
                   engine="compiled")
     assert res.row("feedforward")["rms"] * 10 <= res.row("open_loop")["rms"]
     assert res.row("feedback_compensated")["rms"] < res.row("feedback")["rms"]
     # the trap: a unit-gain compensator at the same controller gains tracks worse than PID alone
     unit = build_loop("feedback_compensated", model, piezo_stage(), controller=ctrl,
                       compensator=compensator_system(model), dt=DT)
-    assert compare([unit], r, t).rows[0]["rms"] > res.row("feedback")["rms"]
+    assert compare([unit], t, r).rows[0]["rms"] > res.row("feedback")["rms"]
 
 
 def test_table_and_plot(tmp_path):
@@ -94,7 +94,7 @@ def test_table_and_plot(tmp_path):
                             compensator=compensator_system(model), dt=DT,
                             scenarios=["open_loop", "feedforward"])
     t, r = _reference(2000)
-    res = compare(loops, r, t)
+    res = compare(loops, t, r)
     row = res.row("open_loop")
     y = np.asarray(res.responses["open_loop"].outputs)[0]
     span = r.max() - r.min()
@@ -138,4 +138,44 @@ def test_bad_loops():
         build_loop("feedback", model, leaky, controller=pid(0, 1, 0, DT))
     loop = build_loop("open_loop", model, piezo_stage(), dt=DT)
     with pytest.raises(ValueError, match="dt is 0.0001"):
-        simulate_loop(loop, np.zeros(10), np.arange(10) * 2e-4)
+        simulate_loop(loop, np.arange(10) * 2e-4, np.zeros(10))
+
+
+def test_python_control_argument_order_and_the_old_calls():
+    model = _actuator()
+    comp = compensator_system(model, nominal_gain="auto", input_range=(-1.5, 1.5))
+    loops = build_scenarios(model, piezo_stage(), controller=pid(0.0, 60.0, 0.0, DT), compensator=comp, dt=DT)
+    loop = loops["feedback_compensated"]
+    t, r = _reference()
+    new = np.asarray(simulate_loop(loop, t, r).outputs)
+    for old_call in (lambda: simulate_loop(loop, r, t), lambda: simulate_loop(loop, r),
+                     lambda: simulate_loop(loop, reference=r, t=t), lambda: simulate_loop(loop, reference=r)):
+        with pytest.warns(DeprecationWarning, match="timepts, inputs"):
+            np.testing.assert_array_equal(np.asarray(old_call().outputs), new)
+    with pytest.warns(DeprecationWarning):
+        old = loop.simulate(t=t, reference=r)
+    np.testing.assert_array_equal(np.asarray(old.outputs), np.asarray(loop.simulate(t, r).outputs))
+    with pytest.warns(DeprecationWarning):
+        old_rows = compare(loops, r, t).rows
+    assert [row["rms"] for row in old_rows] == [row["rms"] for row in compare(loops, t, r).rows]
+    with pytest.raises(TypeError, match="unexpected keyword"):
+        simulate_loop(loop, t, r, ref=r)
+    with pytest.raises(ValueError, match="timepts has 3 samples"):
+        simulate_loop(loop, t[:3], r)
+
+
+def test_loop_params_and_initial_state_in_both_engines():
+    model = _actuator()
+    comp = compensator_system(model, nominal_gain="auto", input_range=(-1.5, 1.5))
+    loop = build_loop("feedback_compensated", model, piezo_stage(), controller=pid(0.0, 60.0, 0.0, DT),
+                      compensator=comp, dt=DT)
+    t, r = _reference()
+    x0 = loop.initial_state()
+    labels = loop.system.state_labels
+    x0[[labels.index("plant_position"), labels.index("plant_velocity")]] = [0.01, -0.5]   # displaced, moving
+    for kw in (dict(params={"actuator_gain": 0.8}), dict(params={"nominal_gain": 3.0}), dict(initial_state=x0)):
+        slow = np.asarray(loop.simulate(t, r, **kw).outputs)
+        fast = np.asarray(loop.simulate(t, r, engine="compiled", **kw).outputs)
+        # compiled and python-control: the same kernels, products summed in another order
+        assert np.max(np.abs(fast - slow)) <= 1e-9, kw
+        assert np.max(np.abs(slow - np.asarray(loop.simulate(t, r).outputs))) > 1e-4, kw   # it changed something

@@ -43,9 +43,28 @@ def test_blocks_pickle_and_simulate_identically(name):
         copy = pickle.loads(pickle.dumps(block))
         assert copy.name == block.name and copy.nstates == block.nstates
         np.testing.assert_array_equal(_response(copy, v), _response(block, v))   # same kernels: bit-identical
+        assert type(copy) is type(block) and copy.params == block.params
+        assert copy.state_labels == block.state_labels
         if hasattr(block, "nominal_gain"):
             assert copy.nominal_gain == block.nominal_gain
             assert type(copy.compensator) is type(block.compensator)
+        else:
+            assert type(copy.model) is type(block.model)
+
+
+def test_blocks_with_a_shifted_virgin_state_pickle_and_deepcopy():
+    import copy as copy_module
+
+    model = MGPI([0.5, 1.0], [0.3, 0.2], 1.0, envelope=Tanh(5.0, 0.4, 0.2))   # virgin plays at -0.5
+    block = hysteresis_system(model, dt=DT, name="act", actuator_gain=1.2)
+    v = 1.5 * np.sin(np.linspace(0, 12, 300))
+    for other in (pickle.loads(pickle.dumps(block)), copy_module.deepcopy(block), block.copy("act2")):
+        assert other.params == {"actuator_gain": 1.2}
+        np.testing.assert_array_equal(_response(other, v), _response(block, v))
+    t = np.arange(v.size) * DT
+    # X0 = 0 is the virgin state; 1e-12: (z - 0.5) + 0.5 rounds
+    np.testing.assert_allclose(np.asarray(ct.input_output_response(block, t, v).outputs).reshape(-1),
+                               1.2 * model.simulate(v), rtol=0, atol=1e-12)
 
 
 def test_saturated_pid_pickles():
@@ -75,12 +94,12 @@ def test_built_loops_pickle(scenarios):
 def test_compare_on_executors_equals_serial(scenarios):
     t = np.arange(3000) * DT
     r = 1.5 * np.sin(2 * np.pi * 10 * t)
-    serial = compare(scenarios, r, t)
+    serial = compare(scenarios, t, r)
     seen = []
     with ThreadPoolExecutor(2) as ex:
-        threaded = compare(scenarios, r, t, executor=ex, progress=lambda d, n, name: seen.append(d))
+        threaded = compare(scenarios, t, r, executor=ex, progress=lambda d, n, name: seen.append(d))
     with ProcessPoolExecutor(2) as ex:
-        processes = compare(scenarios, r, t, executor=ex)
+        processes = compare(scenarios, t, r, executor=ex)
     for other in (threaded, processes):
         assert [row["scenario"] for row in other.rows] == [row["scenario"] for row in serial.rows]
         for a, b in zip(serial.rows, other.rows):
@@ -88,17 +107,17 @@ def test_compare_on_executors_equals_serial(scenarios):
     assert sorted(seen) == list(range(1, len(scenarios) + 1))
     pickle.loads(pickle.dumps(serial))                                 # results pickle too
     with pytest.raises(TypeError, match="executor"):
-        compare(scenarios, r, t, executor="dask")
+        compare(scenarios, t, r, executor="dask")
 
 
 def test_compare_through_a_dask_cluster(scenarios):
     distributed = pytest.importorskip("distributed")
     t = np.arange(2000) * DT
     r = 1.5 * np.sin(2 * np.pi * 10 * t)
-    serial = compare(scenarios, r, t)
+    serial = compare(scenarios, t, r)
     with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
                                   dashboard_address=None) as cluster, distributed.Client(cluster) as client:
-        remote = compare(scenarios, r, t, executor=client.get_executor())
+        remote = compare(scenarios, t, r, executor=client.get_executor())
     assert [row["rms"] for row in remote.rows] == [row["rms"] for row in serial.rows]
 
 

@@ -59,7 +59,7 @@ loops = [
     build_loop("two_dof", actuator, stage, compensator=compensator, **parts),
 ]
 r = reference(t, REFERENCE_HZ)
-result = compare(loops, r, t)
+result = compare(loops, t, r)
 print(result)
 
 # %%
