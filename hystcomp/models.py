@@ -400,7 +400,7 @@ class MGPI(HysteresisModel):
         if self.symmetric:
             kind, prm = self.envelope_left.kernel_spec()
             if kind != _k.CUSTOM:
-                _k.play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
+                _k.run_play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
                 return y
             g = self.envelope_left
             block = np.empty((min(_BLOCK, x.size), self._r.size))
