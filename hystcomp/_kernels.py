@@ -590,6 +590,13 @@ def _val_der(kind, prm, x):
 
 
 @njit(cache=True, nogil=True)
+def _val_der_closed(kind, prm, x):
+    # _val_der for the built-in closed forms only (Identity, Linear, Tanh, Atanh)
+    a, b, c = _prm3(prm)
+    return _fval_der(kind, prm, a, b, c, x, False)
+
+
+@njit(cache=True, nogil=True)
 def _output_and_slopes(fam, x, xprev, r, p, p0, state,
                        kl, pl, kr, pr, kh, ph, hscale):
     """Model output for a new input x from the current state, with the
@@ -807,9 +814,16 @@ def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out
     dcache = np.empty(N)
     sv = np.empty(N)
     sd = np.empty(N)
-    for i in range(N):  # once per call: not worth inlined copies
-        cache[i], dcache[i] = _val_der(kind, prm, state[i])
-    gx, dgx = _val_der(kind, prm, xprev)
+    # once per call: not worth inlined copies; the closed-form copy keeps the
+    # general envelope code (Polynomial, Inverse) out of the compiled kernel
+    if gen:
+        for i in range(N):
+            cache[i], dcache[i] = _val_der(kind, prm, state[i])
+        gx, dgx = _val_der(kind, prm, xprev)
+    else:
+        for i in range(N):
+            cache[i], dcache[i] = _val_der_closed(kind, prm, state[i])
+        gx, dgx = _val_der_closed(kind, prm, xprev)
     # output and one-sided slopes at the starting point (the previous input),
     # carried over from the state update of the previous sample
     y0 = 0.0
