@@ -85,12 +85,14 @@ def simulate_batch(model, v, weights, p0=None, initial_state=None, return_state=
     W, p0s = batch_weights(model, weights, p0)
     state = model.default_state() if initial_state is None else as_state(initial_state, model.n_states)
     Y = np.empty((x.size, W.shape[0]))
-    WT = np.ascontiguousarray(W.T)
+    # one product per block: [memoryless column, operator outputs] @ [p0; W^T]
+    WT = np.ascontiguousarray(np.vstack([p0s[None, :], W.T]))
+    ext = np.empty((min(_BLOCK, x.size), W.shape[1] + 1))
     for s in range(0, x.size, _BLOCK):
         xs = x[s:s + _BLOCK]
         first, ops = model._operator_block(xs, state)
-        Ys = Y[s:s + xs.size]
-        np.matmul(ops, WT, out=Ys)
-        if first is not None:
-            Ys += first[:, None] * p0s[None, :]
+        e = ext[:xs.size]
+        e[:, 0] = 0.0 if first is None else first
+        e[:, 1:] = ops
+        np.matmul(e, WT, out=Y[s:s + xs.size])
     return (Y, state) if return_state else Y
