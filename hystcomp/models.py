@@ -115,14 +115,17 @@ class HysteresisModel:
 
         Parameters
         ----------
-        v : array_like, shape (n,)
+        v : array_like, shape (n,) or (n, m)
             Input samples (finite, inside the envelopes' domains).  Between
             two samples the input is taken as monotone, so the result does not
-            depend on the sampling rate (rate independence, eq. 14/24).
+            depend on the sampling rate (rate independence, eq. 14/24).  A
+            2-D input holds m signals in its columns (samples x signals), each
+            simulated from its own state; the output then has shape (n, m).
         initial_state : array_like, optional
             State before the first sample, as returned by a previous call with
             ``return_state=True``; default the virgin state of the thesis
-            (every operator output 0 before t = 0, eq. 12/22).
+            (every operator output 0 before t = 0, eq. 12/22).  For a 2-D
+            input, shape (m, n_states): one state per signal.
         return_state : bool, optional
             Also return the state after the last sample.
 
