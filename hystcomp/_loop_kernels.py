@@ -31,7 +31,7 @@ B_STOP = 2    # stop-type PI forward (stop_sum)
 B_EXACT = 3   # exact inverse (inverse_solve)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev,
                bin_, bout, info):
     """One sample of a hysteresis or compensator block; `state` is updated
@@ -49,7 +49,7 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, s
     return bout[0], xprev
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _matvec_add(A, x, B, u, out):
     n = A.shape[0]
     for i in range(n):
@@ -59,7 +59,7 @@ def _matvec_add(A, x, B, u, out):
         out[i] = s + B[i, 0] * u
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def _dot(C, x):
     s = 0.0
     for j in range(C.shape[1]):
@@ -67,7 +67,7 @@ def _dot(C, x):
     return s
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def run_loop(ref, ff, use_ff, use_fb, use_comp, kcomp,
              Ap, Bp, Cp, Dp, xp,
              Ac, Bc, Cc, Dc, xc, limited, ulo, uhi, pid_dt,

@@ -299,7 +299,7 @@ class ExactInverse:
             xprev = mstate[-1] if initial_state is None else xprev
         out = np.empty(target.size)
         info = np.zeros(3, dtype=np.int64)
-        xlast = _k.inverse_solve(
+        xlast = _k.inverse_kernel(self._fam, self._kl)(
             self._fam, target, self._r, self._p, self._p0, kstate, xprev,
             self._kl, self._pl, self._kr, self._pr, self._kh, self._ph, self._hscale,
             self.input_limits[0], self.input_limits[1], 1e-14, out, info,

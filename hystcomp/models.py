@@ -22,6 +22,7 @@ O(samples + operators).
 
 import numpy as np
 
+from . import _batch
 from . import _kernels as _k
 from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
 from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
@@ -114,14 +115,17 @@ class HysteresisModel:
 
         Parameters
         ----------
-        v : array_like, shape (n,)
+        v : array_like, shape (n,) or (n, m)
             Input samples (finite, inside the envelopes' domains).  Between
             two samples the input is taken as monotone, so the result does not
-            depend on the sampling rate (rate independence, eq. 14/24).
+            depend on the sampling rate (rate independence, eq. 14/24).  A
+            2-D input holds m signals in its columns (samples x signals), each
+            simulated from its own state; the output then has shape (n, m).
         initial_state : array_like, optional
             State before the first sample, as returned by a previous call with
             ``return_state=True``; default the virgin state of the thesis
-            (every operator output 0 before t = 0, eq. 12/22).
+            (every operator output 0 before t = 0, eq. 12/22).  For a 2-D
+            input, shape (m, n_states): one state per signal.
         return_state : bool, optional
             Also return the state after the last sample.
 
@@ -146,11 +150,58 @@ class HysteresisModel:
         >>> bool(np.array_equal(np.concatenate([y1, y2]), m.simulate(v)))
         True
         """
+        if np.ndim(v) == 2:
+            return _batch.simulate_columns(self, v, initial_state, return_state)
         x = as_signal(v, "v")
         self._check_input_domain(x)
         state = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
         y = self._simulate(x, state)
         return (y, state) if return_state else y
+
+    def simulate_batch(self, v, weights, p0=None, initial_state=None, return_state=False):
+        """Outputs of a batch of models that differ from this one only in
+        their weights (a Monte Carlo over the density), in one pass.
+
+        The operator outputs do not depend on the weights (eq. 18, 25), so the
+        plays run once (compiled, block by block) and each block of outputs
+        is one matrix product with the weights.  Results agree with
+        ``simulate`` of each model to rounding (the sum order differs).
+
+        Parameters
+        ----------
+        v : array_like, shape (n,)
+            Input samples, shared by every model.
+        weights : array_like, shape (m, N)
+            One row of operator weights p_1..p_N per model (N as this model).
+        p0 : float or array_like of shape (m,), optional
+            The models' p0 (PI, mGPI, stop PI); default this model's.  Not
+            allowed for the GPI (its memoryless part is H).
+        initial_state : array_like, optional
+            State shared by every model before the first sample; default the
+            virgin state.
+        return_state : bool, optional
+            Also return the (shared) state after the last sample.
+
+        Returns
+        -------
+        Y : ndarray, shape (n, m)
+            ``Y[:, j]`` is the output of the model with weights ``weights[j]``.
+        state : ndarray
+            Final operator state (only if `return_state`).
+
+        Examples
+        --------
+        >>> import numpy as np
+        >>> from hystcomp import PI
+        >>> m = PI([1.0, 2.0], [0.5, 0.25], p0=1.0)
+        >>> v = 3 * np.sin(np.linspace(0, 10, 50))
+        >>> Y = m.simulate_batch(v, [[0.5, 0.25], [0.1, 0.0]])
+        >>> Y.shape
+        (50, 2)
+        >>> bool(np.allclose(Y[:, 0], m.simulate(v), rtol=0, atol=1e-13))
+        True
+        """
+        return _batch.simulate_batch(self, v, weights, p0, initial_state, return_state)
 
     def _check_input_domain(self, x):
         for env in self._envelopes():
@@ -400,7 +451,7 @@ class MGPI(HysteresisModel):
         if self.symmetric:
             kind, prm = self.envelope_left.kernel_spec()
             if kind != _k.CUSTOM:
-                _k.play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
+                _k.run_play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
                 return y
             g = self.envelope_left
             block = np.empty((min(_BLOCK, x.size), self._r.size))
@@ -426,6 +477,25 @@ class MGPI(HysteresisModel):
             _k.bounded_play_states(lower, upper, state, ws)
             y[s:s + xs.size] = _row_sums(0.0, ws, p_all)
         return y
+
+    def _operator_block(self, x, state):
+        # (memoryless column weighted by p0, operator outputs (n, N)); state updated
+        if self.symmetric:
+            z = np.empty((x.size, self._r.size))
+            _k.play_states(x, self._r, state, z)
+            g = self.envelope_left
+            return _extended(g, x), _extended(g, z)
+        r_all = np.concatenate([[0.0], self._r])
+        w = np.empty((x.size, r_all.size))
+        kl, pl = self.envelope_left.kernel_spec()
+        kr, pr = self.envelope_right.kernel_spec()
+        if kl != _k.CUSTOM and kr != _k.CUSTOM:
+            _k.mplay_states(x, r_all, state, kl, pl, kr, pr, w)
+        else:
+            lower = _extended(self.envelope_left, x[:, None] - r_all[None, :])
+            upper = _extended(self.envelope_right, x[:, None] + r_all[None, :])
+            _k.bounded_play_states(lower, upper, state, w)
+        return w[:, 0].copy(), w[:, 1:]
 
     def operator_responses(self, v, initial_state=None):
         """Outputs of every operator, shape (n, N+1): column 0 is the r = 0
@@ -802,6 +872,13 @@ class StopPI(HysteresisModel):
         state[:-1] = w
         return y
 
+    def _operator_block(self, x, state):
+        w = state[:-1].copy()
+        out = np.empty((x.size, self._r.size))
+        state[-1] = _k.stop_states(x, self._r, w, state[-1], out)
+        state[:-1] = w
+        return x, out
+
     def output_bounds(self):
         """Bounded only if p0 = 0: then ``|w| <= sum_i |p_i| r_i``."""
         if self.p0 != 0.0:
@@ -896,6 +973,13 @@ class GPI(HysteresisModel):
         if self.H is not None:
             y += self.H._value(x)
         return y
+
+    def _operator_block(self, x, state):
+        a = self.envelope_left._value(x)
+        b = self.envelope_right._value(x)
+        out = np.empty((x.size, self._r.size))
+        _k.two_input_play_states(a, b, self._r, state, out)
+        return (self.H._value(x) if self.H is not None else None), out
 
     def output_bounds(self):
         """Each generalized play lies in [inf gl - r, sup gr + r] (and 0)."""

@@ -363,8 +363,9 @@ def test_bad_simulate_arguments(name):
     with pytest.raises(ValueError, match=rf"initial_state has {m.n_states + 1} entries but this model has "
                                          rf"{m.n_states} states"):
         m.simulate(V[:5], initial_state=np.zeros(m.n_states + 1))
-    with pytest.raises(ValueError, match=r"Parameter v has shape \(2, 3\)"):
-        m.simulate(np.zeros((2, 3)))
+    # a 2-D input is a batch of signals (issue 13, tests/test_batch.py); 3-D is an error
+    with pytest.raises(ValueError, match=r"Parameter v has shape \(2, 3, 1\)"):
+        m.simulate(np.zeros((2, 3, 1)))
 
 
 @pytest.mark.parametrize("b", [0.5, 2.0])
