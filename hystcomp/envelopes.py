@@ -487,8 +487,20 @@ class Polynomial(Envelope):
         scale = float(np.max(np.abs(dc))) if dc.size else 0.0
         trimmed = np.polynomial.Polynomial(np.polynomial.polynomial.polytrim(dc, tol=1e-15 * scale))
         crit = [float(z.real) for z in trimmed.roots() if abs(z.imag) < 1e-12 and lo < z.real < hi]
+        # the derivative's minimum on [lo, hi] is at an end or where the
+        # second derivative vanishes: probe there (real parts of every root,
+        # a root pair split by rounding included), not only on a grid
+        ddc = trimmed.deriv().coef
+        if ddc.size > 1 and np.any(ddc != 0):
+            ddc = np.polynomial.polynomial.polytrim(ddc, tol=1e-15 * float(np.max(np.abs(ddc))))
+            crit += [float(z.real) for z in np.polynomial.Polynomial(ddc).roots() if lo < z.real < hi]
         probe = np.concatenate([[lo, hi], np.linspace(lo, hi, 257), crit])
+        # rounding of the expanded derivative near a double root: a dip below
+        # -1e-12 of the derivative's scale on the interval is a real one
+        dscale = scale * max(1.0, abs(lo), abs(hi)) ** max(dc.size - 1, 0)
         dmin = float(np.min(dpoly(probe))) if dpoly.degree() >= 0 else 0.0
+        if -1e-12 * dscale <= dmin < 0:
+            dmin = 0.0
         # a derivative root where the sign does not change (inside, or at an
         # end of the interval) is an isolated flat point: the polynomial is
         # still strictly increasing, so it is allowed as long as the

@@ -233,7 +233,9 @@ class HysteresisModel:
         return type(self) is type(other) and self._key() == other._key()
 
     def __hash__(self):
-        return hash(repr(self._key()))
+        # hash the key itself, not its repr: equal keys (0.0 and -0.0
+        # included) then hash equal
+        return hash(self._key())
 
     # operator thresholds and weights shared by the PI family
     @property
@@ -356,14 +358,39 @@ class MGPI(HysteresisModel):
         return (self.envelope_left,) if self.symmetric else (self.envelope_left, self.envelope_right)
 
     def default_state(self):
-        """Virgin state: every operator output 0 before the first sample."""
+        """Virgin state: every operator output 0 before the first sample.
+
+        For a symmetric model the state holds the play positions z_i with
+        operator outputs gamma(z_i): z_i = gamma^-1(0), or the end of gamma's
+        domain where gamma is nearest 0 when 0 is an end of gamma's range or
+        outside it.
+
+        Returns
+        -------
+        ndarray, shape (n_states,)
+            The virgin state.
+
+        Examples
+        --------
+        >>> from hystcomp import MGPI
+        >>> from hystcomp.envelopes import Polynomial
+        >>> g = Polynomial([0.0, 1.0], interval=(0.0, 10.0))   # range [0, 10]
+        >>> MGPI([1.0], [0.5], 1.0, envelope=g).default_state().tolist()
+        [0.0]
+        """
         if self.symmetric:
             g = self.envelope_left
             lo, hi = g.range
             if lo < 0.0 < hi:
                 z0 = g._inverse(np.array([0.0]))[0]
             else:
-                z0 = -np.inf if hi <= 0.0 else np.inf
+                # 0 at or below gamma's range: the play sits at the bottom
+                # of gamma's domain (gamma(z0) = inf gamma, = 0 when the
+                # range starts at 0); at or above it, at the top.  A range
+                # that excludes 0 has no z with gamma(z) = 0: the operators
+                # then start from the nearest output gamma can give.
+                dlo, dhi = g.domain
+                z0 = dhi if hi <= 0.0 else dlo
             return np.full(self._r.size, z0)
         return np.zeros(self._r.size + 1)
 
@@ -898,9 +925,29 @@ class GPI(HysteresisModel):
         return y
 
     def output_bounds(self):
-        """Each generalized play lies in [inf gl - r, sup gr + r] (and 0)."""
-        lo = np.minimum(self.envelope_left.range[0] - self._r, 0.0)
-        hi = np.maximum(self.envelope_right.range[1] + self._r, 0.0)
+        """(lower, upper) bounds of the output for any input from the virgin state.
+
+        Each generalized play ``max{gl(v) - r, min{gr(v) + r, w}}`` (eq. 20)
+        stays between ``min(inf gl - r, inf gr + r, 0)`` and
+        ``max(sup gl - r, sup gr + r, 0)`` (the play can reach sup gl - r
+        when gl rises above gr + 2r); the bounds are the weighted sums of
+        those, sign by sign, plus H's range.
+
+        Returns
+        -------
+        (float, float)
+            Lower and upper bound (infinite for unbounded envelopes).
+
+        Examples
+        --------
+        >>> from hystcomp import GPI
+        >>> from hystcomp.envelopes import Tanh
+        >>> GPI([0.1], [1.0], Tanh(10, 1.0), Tanh(5, 1.0)).output_bounds()
+        (-10.1, 9.9)
+        """
+        gl, gr = self.envelope_left.range, self.envelope_right.range
+        lo = np.minimum(np.minimum(gl[0] - self._r, gr[0] + self._r), 0.0)
+        hi = np.maximum(np.maximum(gl[1] - self._r, gr[1] + self._r), 0.0)
         pos = self._p > 0
         upper = np.sum(np.where(pos, self._p * hi, self._p * lo))
         lower = np.sum(np.where(pos, self._p * lo, self._p * hi))

@@ -174,7 +174,7 @@ class _PlaneModel(HysteresisModel):
         return NumericalInverse(self, on_unreachable=on_unreachable, input_limits=input_limits)
 
     def _key(self):
-        return (self.v_min, self.v_max, self._mu.tobytes(), self.offset)
+        return (self.v_min, self.v_max, (self._mu + 0.0).tobytes(), self.offset)   # + 0.0: -0.0 -> 0.0
 
     def to_dict(self):
         """JSON-safe description (exact round trip through :func:`model_from_dict`)."""
@@ -297,7 +297,8 @@ class Preisach(_PlaneModel):
         ([0, 1, 2, 4], 3)
         """
         x = np.asarray(v, dtype=np.float64)
-        L = np.clip(np.floor((x - self.v_min) / self.h + 0.5), 0, self.n).astype(np.int64)
+        centres = self.v_min + (np.arange(self.n) + 0.5) * self.h   # as preisach_grid
+        L = np.searchsorted(centres, x, side="right").astype(np.int64)
         return int(L) if L.ndim == 0 else L
 
     def default_state(self):
