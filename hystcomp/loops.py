@@ -715,7 +715,14 @@ def compare(scenarios, reference, t, engine="auto", progress=None, executor=None
     True
     """
     check_choice(engine, "engine", ("auto", "compiled", "python-control"))
+    if isinstance(scenarios, (str, bytes)) or not hasattr(scenarios, "__iter__"):
+        raise TypeError(f"Parameter scenarios is {scenarios!r} but should be a dict or list of Loop")
     loops = list(scenarios.values()) if isinstance(scenarios, dict) else list(scenarios)
+    keys = list(scenarios) if isinstance(scenarios, dict) else range(len(loops))
+    for key, loop in zip(keys, loops):
+        if not isinstance(loop, Loop):
+            raise TypeError(f"Parameter scenarios[{key!r}] is {loop!r} ({type(loop).__name__}) "
+                            "but should be a Loop (see build_scenarios)")
     r = as_signal(reference, "reference")
     t = as_signal(t, "t")
     if t.size != r.size:

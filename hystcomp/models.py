@@ -23,7 +23,7 @@ O(samples + operators).
 import numpy as np
 
 from . import _kernels as _k
-from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
+from ._validation import as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_weights
 from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
 from .operators import modified_play
 
@@ -148,7 +148,8 @@ class HysteresisModel:
         """
         x = as_signal(v, "v")
         self._check_input_domain(x)
-        state = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
+        virgin = self.default_state()
+        state = virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
         y = self._simulate(x, state)
         return (y, state) if return_state else y
 
@@ -181,8 +182,9 @@ class HysteresisModel:
         >>> StopPI([1.0], [1.0], p0=1.0).loading_curve([0.5, 2.0]).tolist()
         [1.0, 3.0]
         """
-        rr = np.asarray(r, dtype=np.float64)
+        rr = as_float_array(r, "r")
         flat = rr.reshape(-1)
+        as_signal(flat, "r", min_length=0)   # finite end points
         out = np.empty(flat.shape)
         for j, end in enumerate(flat):
             out[j] = self.simulate(np.array([0.0, end]))[-1]
@@ -417,7 +419,7 @@ class MGPI(HysteresisModel):
         >>> s.tolist(), m.operator_outputs(s).tolist()     # z = 3 - 1, w = 2 z
         ([2.0], [4.0])
         """
-        s = as_state(state, self.n_states, "state")
+        s = as_state(state, self.n_states, "state", virgin=self.default_state())
         if self.symmetric:
             return _extended(self.envelope_left, s)
         return s
@@ -623,7 +625,7 @@ class MGPI(HysteresisModel):
 
     @classmethod
     def _from_dict(cls, d):
-        if "envelope" in d:
+        if "envelope" in d or "envelope_left" not in d:
             return cls(d["thresholds"], d["weights"], d["p0"], envelope=envelope_from_dict(d["envelope"]))
         return cls(d["thresholds"], d["weights"], d["p0"],
                    envelope_left=envelope_from_dict(d["envelope_left"]),
@@ -691,7 +693,8 @@ class PI(MGPI):
         >>> PI([1.0, 2.0], [0.5, 0.25], p0=1.0).loading_curve([1.0, 3.0, -3.0]).tolist()
         [1.0, 4.25, -4.25]
         """
-        rr = np.asarray(r, dtype=np.float64)
+        rr = as_float_array(r, "r")
+        as_signal(rr.reshape(-1), "r", min_length=0)   # finite end points
         a = np.abs(rr)[..., None]
         val = self.p0 * np.abs(rr) + (np.maximum(a - self._r, 0.0) * self._p).sum(axis=-1)
         val = np.sign(rr) * val
@@ -1105,10 +1108,15 @@ def model_from_dict(d, expected=None):
         raise ValueError(
             f"Model description has schema_version {version!r}; this hystcomp reads version {SCHEMA_VERSION}"
         )
-    try:
-        cls = _MODELS[d["model"]]
-    except KeyError:
-        raise ValueError(f"Model type {d['model']!r} is unknown; expected one of {sorted(_MODELS)}") from None
+    cls = _MODELS.get(d["model"]) if isinstance(d["model"], str) else None
+    if cls is None:
+        raise ValueError(f"Model type {d['model']!r} is unknown; expected one of {sorted(_MODELS)}")
     if expected is not None and not issubclass(cls, expected):
         raise ValueError(f"Description is of a {d['model']} model, not {expected.__name__}")
-    return cls._from_dict(d)
+    try:
+        return cls._from_dict(d)
+    except KeyError as exc:
+        raise ValueError(
+            f"Model description of a {d['model']} model has no key {exc.args[0]!r}; expected "
+            "the keys written by model.to_dict()"
+        ) from None

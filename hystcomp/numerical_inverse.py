@@ -28,7 +28,7 @@ import warnings
 import numpy as np
 
 from . import _kernels_other as _ko
-from ._validation import as_signal, as_state, check_choice
+from ._validation import as_scalar, as_signal, as_state, check_choice
 from .differential import BacklashLike, BoucWen, Duhem
 from .inverses import UnreachableWarning
 from .preisach import KP, Preisach
@@ -74,7 +74,7 @@ class NumericalInverse:
         check_choice(on_unreachable, "on_unreachable", ("clip", "raise"))
         self.model = model
         self.on_unreachable = on_unreachable
-        self.tol = float(tol)
+        self.tol = as_scalar(tol, "tol", positive=True)
         if isinstance(model, (Preisach, KP)) and np.any(model._mu < 0):
             raise ValueError(
                 f"The numerical inverse of a {type(model).__name__} model needs non-negative weights "

@@ -172,3 +172,123 @@ def test_equal_models_hash_equal():
     f = Preisach((-1.0, 1.0), -np.triu(np.zeros((2, 2))).T)
     assert e == f and hash(e) == hash(f)
     assert len({a, b, c, d}) == 2
+
+
+# --------------------------------------------------------------------------
+# clear errors instead of crashes (issue 12, second list)
+# --------------------------------------------------------------------------
+@pytest.mark.parametrize("make", [
+    lambda: PI([1.0, 2.0], [0.5, 0.25], 1.0),
+    lambda: MGPI([1.0, 2.0], [0.5, 0.25], 1.0, envelope=Tanh(2.0, 1.0)),
+    lambda: MGPI([1.0], [0.5], 1.0, envelope_left=Tanh(2.0, 1.0), envelope_right=Tanh(3.0, 1.0)),
+])
+@pytest.mark.parametrize("bad", [np.inf, -np.inf])
+def test_initial_state_holding_inf_is_refused(make, bad):
+    from hystcomp import StopPI
+
+    for m in (make(), StopPI([1.0, 2.0], [0.5, 0.25], 1.0)):
+        state = m.default_state().copy()
+        state[0] = bad
+        with pytest.raises(ValueError, match=r"initial_state holds -?inf at index 0"):
+            m.simulate([0.0, 1.0], initial_state=state)
+
+
+def test_virgin_state_at_an_infinite_domain_end_is_accepted_back():
+    from hystcomp.envelopes import Custom
+
+    # a custom envelope on the whole line whose range (0, 2) excludes 0
+    g = Custom(lambda v: 1.0 + np.tanh(v), lambda v: 1.0 - np.tanh(v) ** 2,
+               lambda y: np.arctanh(y - 1.0), domain=(-np.inf, np.inf), range=(0.0, 2.0))
+    m = MGPI([1.0], [0.5], 1.0, envelope=g)
+    s0 = m.default_state()
+    assert s0.tolist() == [-np.inf]
+    v = np.array([0.0, 2.0, -1.0])
+    np.testing.assert_array_equal(m.simulate(v, initial_state=s0), m.simulate(v))
+
+
+def test_model_from_dict_with_a_missing_key_names_it():
+    from hystcomp import GPI, StopPI, model_from_dict
+
+    models = [PI([1.0], [0.5], 1.0), StopPI([1.0], [0.5], 1.0),
+              MGPI([1.0], [0.5], 1.0, envelope=Tanh(2.0, 1.0)),
+              GPI([1.0], [0.5], Tanh(2.0, 1.0), Tanh(3.0, 1.0)),
+              Preisach.from_density(lambda a, b: np.ones_like(a), (-1, 1), 3)]
+    for m in models:
+        d = m.to_dict()
+        assert model_from_dict(d) == m
+        for key in d:
+            if key in ("schema_version", "model", "H", "offset"):
+                continue
+            broken = {k: v for k, v in d.items() if k != key}
+            with pytest.raises(ValueError, match=repr(key)):
+                model_from_dict(broken)
+
+
+def test_fit_on_a_constant_input_says_so():
+    from hystcomp.identify import fit
+
+    for kw in ({}, {"envelope": "atanh"}, {"envelope": "tanh", "asymmetric": True}):
+        with pytest.raises(ValueError, match="Parameter v is constant"):
+            fit(np.zeros(200), np.zeros(200), **kw)
+
+
+@pytest.mark.parametrize("call, name", [
+    (lambda s: s.staircase(5, []), "levels"),
+    (lambda s: s.staircase(1, [0.0, 1.0]), "n"),
+    (lambda s: s.staircase(-3, [1.0]), "n"),
+    (lambda s: s.staircase(2.5, [1.0]), "n"),
+    (lambda s: s.staircase(5, [0.0, np.nan]), "levels"),
+    (lambda s: s.staircase(5, "ab"), "levels"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), [1.0], taper=-0.1), "taper"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), [1.0], taper=0.0), "taper"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), []), "frequencies"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), [np.nan]), "frequencies"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), [-1.0]), "frequencies"),
+    (lambda s: s.multisine([], [1.0]), "t"),
+    (lambda s: s.multisine(np.linspace(1, 0, 100), [1.0]), "t"),
+    (lambda s: s.multisine(np.linspace(0, 1, 100), [1.0], amplitude=np.inf), "amplitude"),
+    (lambda s: s.decaying_sine([], 1.0), "t"),
+    (lambda s: s.decaying_sine([0.0, 0.0, 1.0], 1.0), "t"),
+    (lambda s: s.decaying_sine(np.linspace(0, 1, 10), np.nan), "frequency"),
+    (lambda s: s.decaying_sine(np.linspace(0, 1, 10), 1.0, final_fraction=-0.5), "final_fraction"),
+    (lambda s: s.decaying_sine(np.linspace(0, 1, 10), "fast"), "frequency"),
+    (lambda s: s.identification_experiment(frequencies=[np.nan]), "frequencies"),
+    (lambda s: s.identification_experiment(steps="four"), "steps"),
+    (lambda s: s.identification_experiment(steps=0), "steps"),
+])
+def test_signals_validate_their_arguments(call, name):
+    from hystcomp import signals
+
+    with pytest.raises((ValueError, TypeError), match=rf"Parameter {name}\b"):
+        call(signals)
+
+
+def test_wrong_types_give_type_errors_naming_the_argument():
+    from hystcomp.identify import validate
+    from hystcomp.inverses import tracking_error
+    from hystcomp.iosys import check_wiring, compensator_system, hysteresis_system
+    from hystcomp.loops import compare
+
+    m = PI([1.0], [0.5], 1.0)
+    v = np.sin(np.linspace(0, 10, 300))
+    t = 1e-3 * np.arange(300)
+    cases = [
+        (lambda: compensator_system("x"), "model"),
+        (lambda: compensator_system(m, compensator="x"), "compensator"),
+        (lambda: compensator_system("x", compensator=m.exact_inverse(), nominal_gain="auto",
+                                    input_range=(0, 1)), "model"),
+        (lambda: validate("x", v, v), "model"),
+        (lambda: validate(None, v, v), "model"),
+        (lambda: tracking_error("x", m.exact_inverse(), v), "model"),
+        (lambda: tracking_error(m, None, v), "compensator"),
+        (lambda: compare("x", v, t), "scenarios"),
+        (lambda: compare([1, 2], v, t), r"scenarios\[0\]"),
+        (lambda: compare({"a": 1}, v, t), r"scenarios\['a'\]"),
+        (lambda: check_wiring("x", ["u"], ["y"]), "syslist"),
+        (lambda: check_wiring(None, ["u"], ["y"]), "syslist"),
+        (lambda: check_wiring([1, 2], ["u"], ["y"]), r"syslist\[0\]"),
+        (lambda: check_wiring([hysteresis_system(m)], 5, ["w"]), "inplist"),
+    ]
+    for call, name in cases:
+        with pytest.raises(TypeError, match=rf"Parameter {name}"):
+            call()
