@@ -238,8 +238,17 @@ def compare(scenarios, timepts=None, inputs=None, engine="auto", progress=None, 
     """
     from .loops import _time_and_reference
 
+    from .loops import Loop
+
     check_choice(engine, "engine", ("auto", "compiled", "python-control"))
+    if isinstance(scenarios, (str, bytes)) or not hasattr(scenarios, "__iter__"):
+        raise TypeError(f"Parameter scenarios is {scenarios!r} but should be a dict or list of Loop")
     loops = list(scenarios.values()) if isinstance(scenarios, dict) else list(scenarios)
+    keys = list(scenarios) if isinstance(scenarios, dict) else range(len(loops))
+    for key, loop in zip(keys, loops):
+        if not isinstance(loop, Loop):
+            raise TypeError(f"Parameter scenarios[{key!r}] is {loop!r} ({type(loop).__name__}) "
+                            "but should be a Loop (see build_scenarios)")
     if not loops:
         raise ValueError("Parameter scenarios is empty; pass at least one Loop")
     t, r = _time_and_reference(loops[0], timepts, inputs, deprecated, "compare")

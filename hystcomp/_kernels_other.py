@@ -54,12 +54,22 @@ RK_MAX = 256
 # ----------------------------------------------------------------------------
 @njit(cache=True, nogil=True, inline="always")
 def _level(x, vmin, h, n):
-    t = math.floor((x - vmin) / h + 0.5)
-    if t < 0.0:
+    """#{j : c_j <= x} with the centres c_j = vmin + (j + 1/2) h computed as
+    `preisach_grid` does (exact at a centre; no int overflow for huge x)."""
+    u = (x - vmin) / h + 0.5
+    if not u >= 0.0:
         return 0
-    if t > n:
+    if u >= n + 1.0:
         return n
-    return int(t)
+    t = int(math.floor(u))
+    if t > n:
+        t = n
+    # the division rounds: settle the count on the centres themselves
+    while t < n and vmin + (t + 0.5) * h <= x:
+        t += 1
+    while t > 0 and vmin + (t - 0.5) * h > x:
+        t -= 1
+    return t
 
 
 @njit(cache=True, nogil=True)
@@ -217,12 +227,13 @@ def _kp_diag(z, d, vmin, h, n, prefix):
     """Sum over the cells of diagonal d of mu * rho(z - m)."""
     M = n - d                                  # cells on the diagonal
     t = (z - (vmin + (0.5 + 0.5 * d) * h)) / h  # position in cell units
-    jr = math.floor(t + 0.5)
     total = prefix[d, M]
-    if jr < 0:
+    # compare before rounding to an integer: no int64 overflow for huge z
+    if not t + 0.5 >= 0.0:
         return -total
-    if jr >= M:
+    if t + 0.5 >= M:
         return total
+    jr = math.floor(t + 0.5)
     j = int(jr)
     below = prefix[d, j]
     mu = prefix[d, j + 1] - below
@@ -507,6 +518,7 @@ def diff_inverse(kind, prm, gain, offset, u, state, vlo, vhi, tol, out, info):
         step = max(1e-3 * (abs(v0) + 1.0), tol)
         a = v0
         b = v0
+        ya = y0
         found = False
         for _ in range(200):
             b = v0 + s * step
@@ -518,7 +530,25 @@ def diff_inverse(kind, prm, gain, offset, u, state, vlo, vhi, tol, out, info):
                 break
             if b == lim:
                 break
+            # saturated: a step longer than the input scale no longer moves
+            # the output: settle on the first input that reaches that output
+            # (to tol) rather than running off towards an overflow
+            if not (s * (yb - ya) > tol * (1.0 + abs(yb))) and step > 1.0 + abs(v0):
+                near = v0
+                far = a
+                for _k in range(200):
+                    mid = 0.5 * (near + far)
+                    if mid == near or mid == far:
+                        break
+                    ym = gain * mid + sg * _diff_step(kind, prm, w, v0, mid) + offset
+                    if s * (ya - ym) > tol * (1.0 + abs(ya)):
+                        near = mid
+                    else:
+                        far = mid
+                b = far
+                break
             a = b
+            ya = yb
             step *= 2.0
         if not found:
             info[0] += 1

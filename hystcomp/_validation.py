@@ -9,6 +9,23 @@ import numpy as np
 __all__ = []
 
 
+def as_float_array(x, name):
+    """`x` as a float64 array; TypeError naming `name` for strings, complex
+    numbers or objects that are not numbers (instead of numpy's message)."""
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"Parameter {name} is {x!r} but should be numbers, not a string")
+    try:
+        if np.iscomplexobj(x):
+            raise TypeError(f"Parameter {name} holds complex numbers but should be real numbers")
+        return np.asarray(x, dtype=np.float64)
+    except (TypeError, ValueError) as exc:
+        if str(exc).startswith(f"Parameter {name}"):
+            raise
+        raise TypeError(
+            f"Parameter {name} is {x!r} but should be real numbers ({exc})"
+        ) from None
+
+
 def as_signal(x, name="v", min_length=1):
     """Return `x` as a contiguous 1-D float64 array with finite samples.
 
@@ -18,7 +35,7 @@ def as_signal(x, name="v", min_length=1):
         If `x` is not 1-D, too short, or holds NaN or inf (the message names
         the first offending sample index).
     """
-    arr = np.ascontiguousarray(np.asarray(x, dtype=np.float64))
+    arr = np.ascontiguousarray(as_float_array(x, name))
     if arr.ndim == 0:
         arr = arr.reshape(1)
     if arr.ndim != 1:
@@ -41,7 +58,7 @@ def as_signal(x, name="v", min_length=1):
 
 def as_thresholds(thresholds, name="thresholds", allow_zero=False):
     """Thresholds r_1 < ... < r_N, all > 0 (or >= 0 when `allow_zero`)."""
-    r = np.ascontiguousarray(np.asarray(thresholds, dtype=np.float64).reshape(-1))
+    r = np.ascontiguousarray(as_float_array(thresholds, name).reshape(-1))
     if r.size == 0:
         raise ValueError(f"Parameter {name} is empty; expected at least one threshold")
     if not np.all(np.isfinite(r)):
@@ -67,7 +84,7 @@ def as_thresholds(thresholds, name="thresholds", allow_zero=False):
 
 def as_weights(weights, n, name="weights"):
     """Weights p_1..p_N: finite, one per threshold."""
-    p = np.ascontiguousarray(np.asarray(weights, dtype=np.float64).reshape(-1))
+    p = np.ascontiguousarray(as_float_array(weights, name).reshape(-1))
     if p.size != n:
         raise ValueError(
             f"Parameter {name} has {p.size} entries but there are {n} thresholds; "
@@ -93,9 +110,15 @@ def as_scalar(x, name, positive=False, nonnegative=False):
     return val
 
 
-def as_state(state, n, name="initial_state"):
-    """An explicit operator state: a finite 1-D array of length `n` (copied)."""
-    s = np.array(state, dtype=np.float64).reshape(-1)
+def as_state(state, n, name="initial_state", virgin=None):
+    """An explicit operator state: a finite 1-D array of length `n` (copied).
+
+    An infinite entry is accepted only where the model's own virgin state
+    `virgin` holds the same value (a symmetric mGPI's play sitting at an
+    infinite end of gamma's domain), so that ``default_state()`` passed
+    back is accepted.
+    """
+    s = np.array(as_float_array(state, name), dtype=np.float64).reshape(-1)
     if s.size != n:
         raise ValueError(
             f"Parameter {name} has {s.size} entries but this model has {n} states"
@@ -103,6 +126,14 @@ def as_state(state, n, name="initial_state"):
     if np.isnan(s).any():
         k = int(np.argmax(np.isnan(s)))
         raise ValueError(f"Parameter {name} holds NaN at index {k}")
+    bad = np.isinf(s)
+    if virgin is not None and bad.any():
+        bad &= ~(np.asarray(virgin, dtype=np.float64).reshape(-1) == s)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise ValueError(
+            f"Parameter {name} holds {s[k]} at index {k}; expected finite numbers"
+        )
     return s
 
 
@@ -113,3 +144,46 @@ def check_choice(value, name, choices):
             + ", ".join(repr(c) for c in choices)
         )
     return value
+
+
+def check_output_folder(path, name="out"):
+    """Make sure `path` is (or can be created as) a writable folder; created if missing.
+
+    Called before long work starts, so that a bad output folder fails at once.
+
+    Raises
+    ------
+    ValueError
+        If `path` is an existing file, cannot be created or is not writable
+        (the message names the argument and the path).
+    """
+    import os
+
+    path = os.fspath(path)
+    if not path:
+        raise ValueError(f"Parameter {name} is an empty path; expected a folder")
+    if os.path.exists(path) and not os.path.isdir(path):
+        raise ValueError(
+            f"Parameter {name} is {path!r}, an existing file; expected a folder "
+            "(created if missing)"
+        )
+    try:
+        os.makedirs(path, exist_ok=True)
+    except OSError as exc:
+        raise ValueError(
+            f"Parameter {name} is {path!r}: cannot create the folder ({exc.strerror or exc})"
+        ) from None
+    if not os.access(path, os.W_OK | os.X_OK):
+        raise ValueError(f"Parameter {name} is {path!r}: the folder is not writable")
+    return path
+
+
+def check_simulates(obj, name):
+    """TypeError naming `name` unless `obj` has a callable ``simulate`` (a model
+    or compensator of this package, or one following its protocol)."""
+    if not callable(getattr(obj, "simulate", None)):
+        raise TypeError(
+            f"Parameter {name} is {obj!r} ({type(obj).__name__}) but should be a model or "
+            "compensator with a simulate(x) method"
+        )
+    return obj

@@ -69,6 +69,9 @@ def reproduce(out, echo=print, dt=None, quiet=False):
     matplotlib.use("Agg")  # figures are only written to files
     from . import plotting, thesis
 
+    from ._validation import check_output_folder
+
+    check_output_folder(out, "out")
     status = (lambda line: None) if quiet else echo
     os.makedirs(out, exist_ok=True)
     status(f"hystcomp {__version__}: reproducing W. Ye's thesis into {out}")
@@ -110,6 +113,9 @@ def build_parser():
     )
     parser.add_argument("--version", action="version", version=f"%(prog)s {__version__}",
                         help="print the hystcomp version and exit")
+    parser.add_argument("--debug", action="store_true",
+                        help="show the full traceback of an unexpected error (also accepted "
+                             "after the command)")
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
     text = ("closed-loop study: the thesis's mGPI actuator (saturating tanh envelope) in front of a "
             "piezo stage; PIDs tuned to one phase margin at a scan of gain crossovers, the circle "
@@ -145,7 +151,86 @@ def main(argv=None):
     ...
     SystemExit: 0
     """
-    args = build_parser().parse_args(argv)
+    argv = list(sys.argv[1:] if argv is None else argv)
+    debug = "--debug" in argv
+    argv = [a for a in argv if a != "--debug"]
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    _check_options(parser, args)
+    try:
+        return _dispatch(args)
+    except KeyboardInterrupt:
+        print(f"hystcomp {args.command}: interrupted", file=sys.stderr)
+        return 130
+    except Exception as exc:   # never a traceback unless asked for
+        if debug:
+            raise
+        return _report_failure(args.command, exc)
+
+
+#: exceptions that mean "the options or files given are not usable" (exit 2)
+_BAD_INPUT = (ValueError, TypeError, OSError, UnicodeDecodeError)
+
+
+def _report_failure(command, exc):
+    """One line on stderr naming what failed, and a hint; the exit status."""
+    what = " ".join(str(exc).split()) or "(no message)"
+    if isinstance(exc, _BAD_INPUT):
+        print(f"hystcomp {command}: error: {type(exc).__name__}: {what} "
+              f"(check the options and files; see hystcomp {command} --help)", file=sys.stderr)
+        return 2
+    print(f"hystcomp {command}: internal error: {type(exc).__name__}: {what} "
+          "(run again with --debug to see the traceback, and please report it)", file=sys.stderr)
+    return 1
+
+
+def _check_options(parser, args):
+    """Reject option values the commands cannot use, and unusable output
+    folders, before any long work starts (one line on stderr, exit 2 as for
+    argparse's usage errors)."""
+    import math
+
+    from ._validation import check_output_folder
+
+    class _Errors:
+        @staticmethod
+        def error(msg):
+            print(f"hystcomp {args.command}: error: {msg}", file=sys.stderr)
+            raise SystemExit(2)
+
+    parser = _Errors
+
+    def number(name, value, low, strict=True, high=None):
+        ok = math.isfinite(value) and (value > low if strict else value >= low)
+        ok = ok and (high is None or value < high)
+        if not ok:
+            expected = f"{'>' if strict else '>='} {low}" + (f" and < {high}" if high is not None else "")
+            parser.error(f"argument --{name}: {value} is not a finite number {expected}")
+
+    if args.command == "demo":
+        number("duration", args.duration, 0.0)
+        number("dt", args.dt, 0.0)
+        if args.dt >= args.duration:
+            parser.error(f"argument --dt: {args.dt} s is not shorter than --duration {args.duration} s")
+        for f in args.freqs:
+            number("freqs", f, 0.0)
+        for f in args.crossovers:
+            number("crossovers", f, 0.0)
+        number("phase-margin", args.phase_margin, 0.0, high=180.0)
+        number("required-margin", args.required_margin, 0.0)
+        number("stage-hz", args.stage_hz, 0.0)
+        number("damping", args.damping, 0.0, strict=False)
+    folder = {"demo": ("out", "--out"), "thesis": ("out", "--out"), "diagnose": ("plots", "--plots")}
+    attr, option = folder.get(args.command, (None, None))
+    path = getattr(args, attr, None) if attr else None
+    if path:
+        try:
+            check_output_folder(path, option)
+        except ValueError as exc:
+            parser.error(str(exc))
+
+
+def _dispatch(args):
     if args.command == "thesis":
         reproduce(args.out, quiet=args.quiet)
         return 0

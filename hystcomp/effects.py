@@ -889,7 +889,8 @@ class _Composite:
                               + [np.zeros(0)])
 
     def _state(self, initial_state):
-        return self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
+        virgin = self.default_state()
+        return virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
 
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()

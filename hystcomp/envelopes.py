@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from . import _kernels as _k
-from ._validation import as_scalar
+from ._validation import as_float_array, as_scalar
 
 __all__ = [
     "Envelope",
@@ -466,7 +466,7 @@ class Polynomial(Envelope):
     domain_open = False
 
     def __init__(self, coeffs, interval=(-1.0, 1.0)):
-        c = np.asarray(coeffs, dtype=np.float64).reshape(-1)
+        c = as_float_array(coeffs, "coeffs").reshape(-1)
         if c.size < 2 or not np.all(np.isfinite(c)):
             raise ValueError(
                 f"Parameter coeffs is {[float(x) for x in c]} but should hold at least two finite "
@@ -487,8 +487,20 @@ class Polynomial(Envelope):
         scale = float(np.max(np.abs(dc))) if dc.size else 0.0
         trimmed = np.polynomial.Polynomial(np.polynomial.polynomial.polytrim(dc, tol=1e-15 * scale))
         crit = [float(z.real) for z in trimmed.roots() if abs(z.imag) < 1e-12 and lo < z.real < hi]
+        # the derivative's minimum on [lo, hi] is at an end or where the
+        # second derivative vanishes: probe there (real parts of every root,
+        # a root pair split by rounding included), not only on a grid
+        ddc = trimmed.deriv().coef
+        if ddc.size > 1 and np.any(ddc != 0):
+            ddc = np.polynomial.polynomial.polytrim(ddc, tol=1e-15 * float(np.max(np.abs(ddc))))
+            crit += [float(z.real) for z in np.polynomial.Polynomial(ddc).roots() if lo < z.real < hi]
         probe = np.concatenate([[lo, hi], np.linspace(lo, hi, 257), crit])
+        # rounding of the expanded derivative near a double root: a dip below
+        # -1e-12 of the derivative's scale on the interval is a real one
+        dscale = scale * max(1.0, abs(lo), abs(hi)) ** max(dc.size - 1, 0)
         dmin = float(np.min(dpoly(probe))) if dpoly.degree() >= 0 else 0.0
+        if -1e-12 * dscale <= dmin < 0:
+            dmin = 0.0
         # a derivative root where the sign does not change (inside, or at an
         # end of the interval) is an isolated flat point: the polynomial is
         # still strictly increasing, so it is allowed as long as the
@@ -599,7 +611,10 @@ class Custom(Envelope):
             raise TypeError("Parameters f, df (and finv if given) should be callables")
         self.f, self.df, self.finv = f, df, finv
         self.name = name or getattr(f, "__name__", "f")
-        lo, hi = float(domain[0]), float(domain[1])
+        try:
+            lo, hi = float(domain[0]), float(domain[1])
+        except (TypeError, IndexError, ValueError):
+            raise TypeError(f"Parameter domain is {domain!r} but should be a pair (lo, hi) of numbers") from None
         if not lo < hi:
             raise ValueError(f"Parameter domain is {domain!r} but should satisfy lo < hi")
         self.domain = (lo, hi)
@@ -706,7 +721,11 @@ def extended_values(env, x):
     >>> extended_values(Atanh(1.0, 0.5), [-3.0, 0.0, 2.0]).tolist()
     [-inf, 0.0, inf]
     """
-    x = np.asarray(x, dtype=np.float64)
+    if not isinstance(env, Envelope):
+        raise TypeError(f"Parameter env is {env!r} but should be an hystcomp Envelope")
+    x = as_float_array(x, "x")
+    if np.isnan(x).any():
+        raise ValueError(f"Parameter x holds NaN at flat index {int(np.argmax(np.isnan(x.reshape(-1))))}")
     lo, hi = env.domain
     out = np.empty(x.shape)
     if env.domain_open:
@@ -803,4 +822,10 @@ def envelope_from_dict(d):
         raise ValueError(
             f"Envelope type {d['type']!r} is unknown; expected one of {sorted(_REGISTRY)}"
         ) from None
-    return make(d)
+    try:
+        return make(d)
+    except KeyError as exc:
+        raise ValueError(
+            f"Envelope description of type {d['type']!r} has no key {exc.args[0]!r}; expected the keys "
+            "written by envelope.to_dict()"
+        ) from None

@@ -20,7 +20,7 @@ import warnings
 import numpy as np
 
 from . import _kernels as _k
-from ._validation import as_signal, as_state, check_choice
+from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights, check_choice, check_simulates
 from .envelopes import Envelope
 from .models import GPI, MGPI, HysteresisModel, StopPI, _partial_sum_reasons
 
@@ -91,8 +91,13 @@ def mgpi_inverse_parameters(thresholds, weights, p0, envelope):
     >>> np.round(q[:3], 4).tolist(), np.round(g[:3], 4).tolist()
     ([0.25, 0.561, 0.9314], [-0.196, -0.129, -0.0914])
     """
-    r = np.asarray(thresholds, dtype=np.float64)
-    p = np.asarray(weights, dtype=np.float64)
+    r = as_thresholds(thresholds)
+    p = as_weights(weights, r.size)
+    p0 = as_scalar(p0, "p0")
+    if p0 == 0.0:
+        raise ValueError("Parameter p0 is 0.0 but the analytic inverse needs p0 != 0 (its slope is 1/p0)")
+    if not isinstance(envelope, Envelope):
+        raise TypeError(f"Parameter envelope is {envelope!r} but should be an hystcomp Envelope")
     gamma = envelope
     beta = gamma.inverse_envelope()
     g0 = 1.0 / p0
@@ -106,6 +111,14 @@ def mgpi_inverse_parameters(thresholds, weights, p0, envelope):
         diffs = r_all[j] - r_all[: j + 1]          # r_j - r_i, i = 0..j
         q[j - 1] = float(np.dot(p_all[: j + 1], gamma(diffs)))                   # eq. 56
         denom = float(np.dot(p_all[: j + 1], gamma.derivative(diffs)))          # eq. 58
+        blo, bhi = beta.domain
+        qj = q[j - 1]
+        if not ((blo < qj < bhi) if beta.domain_open else (blo <= qj <= bhi)):
+            raise ValueError(
+                f"Parameters thresholds, weights, p0 give q_{j} = {q[j - 1]:.6g} outside gamma's range "
+                f"{gamma.range} where eq. 58 needs beta'(q_{j}): the analytic inverse does not exist "
+                "for this model (use the exact inverse)"
+            )
         rest = g0 * float(beta.derivative(q[j - 1]))
         if j > 1:
             rest += float(np.dot(g[: j - 1], beta.derivative(q[j - 1] - q[: j - 1])))
@@ -291,7 +304,8 @@ class ExactInverse:
             Also return the final state.
         """
         target = as_signal(u, "u")
-        st = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
+        virgin = self.default_state()
+        st = virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
         xprev = st[0]
         mstate = st[1:].copy()
         kstate = mstate[:-1].copy() if self._fam == _k.FAM_STOP else mstate
@@ -498,6 +512,8 @@ def tracking_error(model, compensator, u):
     >>> bool(err["max"] < 1e-12)
     True
     """
+    check_simulates(model, "model")
+    check_simulates(compensator, "compensator")
     ref = as_signal(u, "u")
     y = model.simulate(compensator.simulate(ref))
     e = y - ref

@@ -224,6 +224,12 @@ def mean_gain(model, input_range, n_samples=2001):
         raise ValueError(f"Parameter input_range is {input_range!r} but should be (lo, hi)") from None
     if not (np.isfinite(lo) and np.isfinite(hi) and lo < hi):
         raise ValueError(f"Parameter input_range is {input_range!r} but should be finite with lo < hi")
+    if not callable(getattr(model, "simulate", None)):
+        raise TypeError(f"Parameter model is {model!r} but should be a hysteresis model")
+    if isinstance(n_samples, (bool, np.bool_)) or not isinstance(n_samples, (int, np.integer)):
+        raise TypeError(f"Parameter n_samples is {n_samples!r} but should be an integer")
+    if n_samples < 2:
+        raise ValueError(f"Parameter n_samples is {n_samples} but should be >= 2")
     n = int(n_samples)
     up = np.linspace(lo, hi, n)
     v = np.concatenate([np.linspace(0.0, lo, n), up[1:], up[::-1][1:], up[1:]])
@@ -302,6 +308,8 @@ def compensator_system(model, method="exact", nominal_gain=None, dt=True, name=N
                 "Parameter nominal_gain is 'auto' but input_range is None; pass the actuator input "
                 "range (lo, hi) over which the mean slope is taken"
             )
+        if not callable(getattr(model, "simulate", None)):
+            raise TypeError(f"Parameter model is {model!r}; nominal_gain='auto' needs a hysteresis model")
         k = mean_gain(model, input_range)
     else:
         k = as_scalar(nominal_gain, "nominal_gain", positive=True)
@@ -334,6 +342,8 @@ def initial_state(sys):
     >>> initial_state(hysteresis_system(PI([1.0], [1.0], p0=1.0))).tolist()
     [0.0]
     """
+    if not isinstance(sys, ct.InputOutputSystem):
+        raise TypeError(f"Parameter sys is {sys!r} but should be a control.InputOutputSystem")
     subs = getattr(sys, "syslist", None)
     if subs is None:
         if isinstance(sys, (HysteresisBlock, CompensatorBlock)):
@@ -582,7 +592,16 @@ def check_wiring(syslist, inplist, outlist, connections=None):
     ...
     hystcomp.iosys.WiringError: algebraic loop: the blocks 'act' -> 'err' -> 'ctrl' form a cycle in which every block has feedthrough (its output depends on its input at the same sample), so no sample can be computed; put a block without feedthrough in the cycle (a discretised plant with D = 0, or a one-sample delay)
     """
+    if isinstance(syslist, (str, bytes)) or not hasattr(syslist, "__iter__"):
+        raise TypeError(f"Parameter syslist is {syslist!r} but should be a list of control.InputOutputSystem")
     syslist = list(syslist)
+    for j, s in enumerate(syslist):
+        if not isinstance(s, ct.InputOutputSystem):
+            raise TypeError(f"Parameter syslist[{j}] is {s!r} ({type(s).__name__}) but should be a "
+                            "control.InputOutputSystem")
+    for pname, lst in (("inplist", inplist), ("outlist", outlist)):
+        if lst is not None and not isinstance(lst, str) and not hasattr(lst, "__iter__"):
+            raise TypeError(f"Parameter {pname} is {lst!r} but should be a signal name or a list of them")
     inplist = [inplist] if isinstance(inplist, str) else list(inplist or [])
     outlist = [outlist] if isinstance(outlist, str) else list(outlist or [])
     names = [s.name for s in syslist]

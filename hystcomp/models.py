@@ -24,7 +24,7 @@ import numpy as np
 
 from . import _batch
 from . import _kernels as _k
-from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
+from ._validation import as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_weights
 from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
 from .operators import modified_play
 
@@ -154,7 +154,8 @@ class HysteresisModel:
             return _batch.simulate_columns(self, v, initial_state, return_state)
         x = as_signal(v, "v")
         self._check_input_domain(x)
-        state = self.default_state() if initial_state is None else as_state(initial_state, self.n_states)
+        virgin = self.default_state()
+        state = virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
         y = self._simulate(x, state)
         return (y, state) if return_state else y
 
@@ -232,8 +233,9 @@ class HysteresisModel:
         >>> StopPI([1.0], [1.0], p0=1.0).loading_curve([0.5, 2.0]).tolist()
         [1.0, 3.0]
         """
-        rr = np.asarray(r, dtype=np.float64)
+        rr = as_float_array(r, "r")
         flat = rr.reshape(-1)
+        as_signal(flat, "r", min_length=0)   # finite end points
         out = np.empty(flat.shape)
         for j, end in enumerate(flat):
             out[j] = self.simulate(np.array([0.0, end]))[-1]
@@ -284,7 +286,9 @@ class HysteresisModel:
         return type(self) is type(other) and self._key() == other._key()
 
     def __hash__(self):
-        return hash(repr(self._key()))
+        # hash the key itself, not its repr: equal keys (0.0 and -0.0
+        # included) then hash equal
+        return hash(self._key())
 
     # operator thresholds and weights shared by the PI family
     @property
@@ -407,14 +411,39 @@ class MGPI(HysteresisModel):
         return (self.envelope_left,) if self.symmetric else (self.envelope_left, self.envelope_right)
 
     def default_state(self):
-        """Virgin state: every operator output 0 before the first sample."""
+        """Virgin state: every operator output 0 before the first sample.
+
+        For a symmetric model the state holds the play positions z_i with
+        operator outputs gamma(z_i): z_i = gamma^-1(0), or the end of gamma's
+        domain where gamma is nearest 0 when 0 is an end of gamma's range or
+        outside it.
+
+        Returns
+        -------
+        ndarray, shape (n_states,)
+            The virgin state.
+
+        Examples
+        --------
+        >>> from hystcomp import MGPI
+        >>> from hystcomp.envelopes import Polynomial
+        >>> g = Polynomial([0.0, 1.0], interval=(0.0, 10.0))   # range [0, 10]
+        >>> MGPI([1.0], [0.5], 1.0, envelope=g).default_state().tolist()
+        [0.0]
+        """
         if self.symmetric:
             g = self.envelope_left
             lo, hi = g.range
             if lo < 0.0 < hi:
                 z0 = g._inverse(np.array([0.0]))[0]
             else:
-                z0 = -np.inf if hi <= 0.0 else np.inf
+                # 0 at or below gamma's range: the play sits at the bottom
+                # of gamma's domain (gamma(z0) = inf gamma, = 0 when the
+                # range starts at 0); at or above it, at the top.  A range
+                # that excludes 0 has no z with gamma(z) = 0: the operators
+                # then start from the nearest output gamma can give.
+                dlo, dhi = g.domain
+                z0 = dhi if hi <= 0.0 else dlo
             return np.full(self._r.size, z0)
         return np.zeros(self._r.size + 1)
 
@@ -441,7 +470,7 @@ class MGPI(HysteresisModel):
         >>> s.tolist(), m.operator_outputs(s).tolist()     # z = 3 - 1, w = 2 z
         ([2.0], [4.0])
         """
-        s = as_state(state, self.n_states, "state")
+        s = as_state(state, self.n_states, "state", virgin=self.default_state())
         if self.symmetric:
             return _extended(self.envelope_left, s)
         return s
@@ -666,7 +695,7 @@ class MGPI(HysteresisModel):
 
     @classmethod
     def _from_dict(cls, d):
-        if "envelope" in d:
+        if "envelope" in d or "envelope_left" not in d:
             return cls(d["thresholds"], d["weights"], d["p0"], envelope=envelope_from_dict(d["envelope"]))
         return cls(d["thresholds"], d["weights"], d["p0"],
                    envelope_left=envelope_from_dict(d["envelope_left"]),
@@ -734,7 +763,8 @@ class PI(MGPI):
         >>> PI([1.0, 2.0], [0.5, 0.25], p0=1.0).loading_curve([1.0, 3.0, -3.0]).tolist()
         [1.0, 4.25, -4.25]
         """
-        rr = np.asarray(r, dtype=np.float64)
+        rr = as_float_array(r, "r")
+        as_signal(rr.reshape(-1), "r", min_length=0)   # finite end points
         a = np.abs(rr)[..., None]
         val = self.p0 * np.abs(rr) + (np.maximum(a - self._r, 0.0) * self._p).sum(axis=-1)
         val = np.sign(rr) * val
@@ -982,9 +1012,29 @@ class GPI(HysteresisModel):
         return (self.H._value(x) if self.H is not None else None), out
 
     def output_bounds(self):
-        """Each generalized play lies in [inf gl - r, sup gr + r] (and 0)."""
-        lo = np.minimum(self.envelope_left.range[0] - self._r, 0.0)
-        hi = np.maximum(self.envelope_right.range[1] + self._r, 0.0)
+        """(lower, upper) bounds of the output for any input from the virgin state.
+
+        Each generalized play ``max{gl(v) - r, min{gr(v) + r, w}}`` (eq. 20)
+        stays between ``min(inf gl - r, inf gr + r, 0)`` and
+        ``max(sup gl - r, sup gr + r, 0)`` (the play can reach sup gl - r
+        when gl rises above gr + 2r); the bounds are the weighted sums of
+        those, sign by sign, plus H's range.
+
+        Returns
+        -------
+        (float, float)
+            Lower and upper bound (infinite for unbounded envelopes).
+
+        Examples
+        --------
+        >>> from hystcomp import GPI
+        >>> from hystcomp.envelopes import Tanh
+        >>> GPI([0.1], [1.0], Tanh(10, 1.0), Tanh(5, 1.0)).output_bounds()
+        (-10.1, 9.9)
+        """
+        gl, gr = self.envelope_left.range, self.envelope_right.range
+        lo = np.minimum(np.minimum(gl[0] - self._r, gr[0] + self._r), 0.0)
+        hi = np.maximum(np.maximum(gl[1] - self._r, gr[1] + self._r), 0.0)
         pos = self._p > 0
         upper = np.sum(np.where(pos, self._p * hi, self._p * lo))
         lower = np.sum(np.where(pos, self._p * lo, self._p * hi))
@@ -1142,10 +1192,15 @@ def model_from_dict(d, expected=None):
         raise ValueError(
             f"Model description has schema_version {version!r}; this hystcomp reads version {SCHEMA_VERSION}"
         )
-    try:
-        cls = _MODELS[d["model"]]
-    except KeyError:
-        raise ValueError(f"Model type {d['model']!r} is unknown; expected one of {sorted(_MODELS)}") from None
+    cls = _MODELS.get(d["model"]) if isinstance(d["model"], str) else None
+    if cls is None:
+        raise ValueError(f"Model type {d['model']!r} is unknown; expected one of {sorted(_MODELS)}")
     if expected is not None and not issubclass(cls, expected):
         raise ValueError(f"Description is of a {d['model']} model, not {expected.__name__}")
-    return cls._from_dict(d)
+    try:
+        return cls._from_dict(d)
+    except KeyError as exc:
+        raise ValueError(
+            f"Model description of a {d['model']} model has no key {exc.args[0]!r}; expected "
+            "the keys written by model.to_dict()"
+        ) from None

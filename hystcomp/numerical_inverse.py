@@ -28,7 +28,7 @@ import warnings
 import numpy as np
 
 from . import _kernels_other as _ko
-from ._validation import as_signal, as_state, check_choice
+from ._validation import as_scalar, as_signal, as_state, check_choice
 from .differential import BacklashLike, BoucWen, Duhem
 from .inverses import UnreachableWarning
 from .preisach import KP, Preisach
@@ -74,7 +74,7 @@ class NumericalInverse:
         check_choice(on_unreachable, "on_unreachable", ("clip", "raise"))
         self.model = model
         self.on_unreachable = on_unreachable
-        self.tol = float(tol)
+        self.tol = as_scalar(tol, "tol", positive=True)
         if isinstance(model, (Preisach, KP)) and np.any(model._mu < 0):
             raise ValueError(
                 f"The numerical inverse of a {type(model).__name__} model needs non-negative weights "
@@ -219,6 +219,7 @@ class NumericalInverse:
             lim = hi if s > 0 else lo
             stepsize = 1e-3 * (abs(v0) + 1.0)
             a = b = v0
+            ya = y0
             found = False
             for _ in range(200):
                 b = v0 + s * stepsize
@@ -230,7 +231,22 @@ class NumericalInverse:
                     break
                 if b == lim:
                     break
+                # saturated (as in _kernels_other.diff_inverse): settle on
+                # the first input that reaches that output
+                if not (s * (yb - ya) > self.tol * (1.0 + abs(yb))) and stepsize > 1.0 + abs(v0):
+                    near, far = v0, a
+                    for _k in range(200):
+                        mid = 0.5 * (near + far)
+                        if mid in (near, far):
+                            break
+                        if s * (ya - step(mid)[0]) > self.tol * (1.0 + abs(ya)):
+                            near = mid
+                        else:
+                            far = mid
+                    b = far
+                    break
                 a = b
+                ya = yb
                 stepsize *= 2.0
             if found:
                 x0, x1 = min(a, b), max(a, b)

@@ -29,7 +29,7 @@ squares.  Neither has an analytic inverse (thesis section 2.3);
 import numpy as np
 
 from . import _kernels_other as _ko
-from ._validation import as_scalar, as_signal, as_state
+from ._validation import as_float_array, as_scalar, as_signal, as_state
 from .models import SCHEMA_VERSION, HysteresisModel, Invertibility, _MODELS, model_from_dict
 
 __all__ = ["Preisach", "KP", "preisach_grid"]
@@ -59,6 +59,10 @@ def preisach_grid(input_range, n):
     ([-0.75, -0.25, 0.25, 0.75], [-1.0, -0.5, 0.0, 0.5, 1.0])
     """
     lo, hi = _as_range(input_range)
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
+        raise TypeError(f"Parameter n is {n!r} but should be an integer number of cells")
+    if n < 1:
+        raise ValueError(f"Parameter n is {n} but should be >= 1")
     h = (hi - lo) / n
     return lo + (np.arange(n) + 0.5) * h, lo + np.arange(n + 1) * h
 
@@ -81,7 +85,7 @@ def _require_keys(d, keys):
 
 
 def _as_plane_weights(weights):
-    mu = np.array(weights, dtype=np.float64)
+    mu = np.array(as_float_array(weights, "weights"), dtype=np.float64)
     if mu.ndim != 2 or mu.shape[0] != mu.shape[1] or mu.shape[0] < 1:
         raise ValueError(
             f"Parameter weights has shape {mu.shape} but should be a square (n, n) array "
@@ -174,7 +178,7 @@ class _PlaneModel(HysteresisModel):
         return NumericalInverse(self, on_unreachable=on_unreachable, input_limits=input_limits)
 
     def _key(self):
-        return (self.v_min, self.v_max, self._mu.tobytes(), self.offset)
+        return (self.v_min, self.v_max, (self._mu + 0.0).tobytes(), self.offset)   # + 0.0: -0.0 -> 0.0
 
     def to_dict(self):
         """JSON-safe description (exact round trip through :func:`model_from_dict`)."""
@@ -297,7 +301,8 @@ class Preisach(_PlaneModel):
         ([0, 1, 2, 4], 3)
         """
         x = np.asarray(v, dtype=np.float64)
-        L = np.clip(np.floor((x - self.v_min) / self.h + 0.5), 0, self.n).astype(np.int64)
+        centres = self.v_min + (np.arange(self.n) + 0.5) * self.h   # as preisach_grid
+        L = np.searchsorted(centres, x, side="right").astype(np.int64)
         return int(L) if L.ndim == 0 else L
 
     def default_state(self):

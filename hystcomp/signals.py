@@ -32,9 +32,40 @@ from collections import namedtuple
 
 import numpy as np
 
-from ._validation import as_scalar
+from ._validation import as_scalar, as_signal
 
 __all__ = ["Experiment", "identification_experiment", "staircase", "multisine", "decaying_sine"]
+
+def _as_times(t, min_length=1):
+    t = as_signal(t, "t", min_length=min_length)
+    d = np.diff(t)
+    if np.any(d <= 0):
+        k = int(np.argmax(d <= 0)) + 1
+        raise ValueError(
+            f"Parameter t is not strictly increasing: t[{k}] = {t[k]} follows t[{k - 1}] = {t[k - 1]}"
+        )
+    return t
+
+
+def _as_frequencies(frequencies):
+    try:
+        f = np.asarray(frequencies, dtype=np.float64).reshape(-1)
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter frequencies is {frequencies!r} but should be a sequence of numbers [Hz]") from None
+    if f.size == 0 or not np.all(np.isfinite(f)) or np.any(f <= 0):
+        raise ValueError(f"Parameter frequencies is {f.tolist()} but should hold finite positive frequencies [Hz]")
+    return f
+
+
+def _as_count(n, name, minimum):
+    if isinstance(n, (bool, np.bool_)) or not isinstance(n, (int, np.integer)):
+        if not (isinstance(n, (float, np.floating)) and float(n).is_integer()):
+            raise TypeError(f"Parameter {name} is {n!r} but should be an integer")
+    n = int(n)
+    if n < minimum:
+        raise ValueError(f"Parameter {name} is {n} but should be >= {minimum}")
+    return n
+
 
 #: result of :func:`identification_experiment`
 Experiment = namedtuple("Experiment", ["t", "v", "segments"])
@@ -77,7 +108,10 @@ def decaying_sine(t, frequency, amplitude=1.0, final_fraction=0.1):
     >>> round(float(v[250]), 4), round(float(np.abs(v[-300:]).max()), 2)
     (0.866, 0.12)
     """
-    t = np.asarray(t, dtype=np.float64)
+    t = _as_times(t)
+    frequency = as_scalar(frequency, "frequency", nonnegative=True)
+    amplitude = as_scalar(amplitude, "amplitude")
+    final_fraction = as_scalar(final_fraction, "final_fraction", positive=True)
     T = float(t[-1] - t[0]) or 1.0
     return amplitude * final_fraction ** ((t - t[0]) / T) * np.sin(2 * np.pi * frequency * (t - t[0]))
 
@@ -102,7 +136,17 @@ def staircase(n, levels):
     >>> staircase(5, [0.0, 1.0]).tolist()
     [0.0, 0.0, 1.0, 1.0, 1.0]
     """
-    levels = np.asarray(levels, dtype=np.float64)
+    try:
+        levels = np.asarray(levels, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter levels is {levels!r} but should be a sequence of numbers") from None
+    if levels.ndim != 1 or levels.size == 0 or not np.all(np.isfinite(levels)):
+        raise ValueError(
+            f"Parameter levels is {levels.tolist()} but should be a non-empty 1-D sequence of finite numbers"
+        )
+    n = _as_count(n, "n", 1)
+    if n < levels.size:
+        raise ValueError(f"Parameter n is {n} but should be at least len(levels) = {levels.size}")
     m = n // levels.size
     v = np.repeat(levels, m)
     return np.concatenate([v, np.full(n - v.size, levels[-1])])
@@ -136,8 +180,13 @@ def multisine(t, frequencies, amplitude=1.0, taper=0.1):
     >>> round(float(np.abs(v).max()), 6), abs(float(v[0])), abs(float(v[-1]))
     (1.0, 0.0, 0.0)
     """
-    t = np.asarray(t, dtype=np.float64) - t[0]
-    f = np.asarray(frequencies, dtype=np.float64)
+    t = _as_times(t, min_length=2)
+    t = t - t[0]
+    f = _as_frequencies(frequencies)
+    amplitude = as_scalar(amplitude, "amplitude")
+    taper = as_scalar(taper, "taper", positive=True)
+    if taper > 0.5:
+        raise ValueError(f"Parameter taper is {taper} but should be in (0, 0.5] (a fraction at each end)")
     K = f.size
     phases = -np.pi * np.arange(1, K + 1) * np.arange(K) / K
     v = np.zeros_like(t)
@@ -199,18 +248,18 @@ def identification_experiment(dt=1e-3, duration=40.0, amplitude=1.0, frequencies
     tail = as_scalar(tail, "tail", nonnegative=True)
     if tail >= 0.9:
         raise ValueError(f"Parameter tail is {tail} but should be below 0.9 (the first pass needs room)")
-    f = np.sort(np.asarray(frequencies, dtype=np.float64))
-    if f.size == 0 or f[0] <= 0:
-        raise ValueError(f"Parameter frequencies is {f.tolist()} but should hold positive frequencies")
+    f = np.sort(_as_frequencies(frequencies))
     if f[-1] > 0.1 / dt:
         raise ValueError(f"Parameter frequencies reaches {f[-1]} Hz but should stay below a tenth of the "
                          f"sampling rate ({0.1 / dt} Hz for dt = {dt})")
-    n_total = int(round(duration / dt))
+    n_total = duration / dt
+    if n_total > 1e9:
+        raise ValueError(f"Parameters duration/dt give {n_total:.3g} samples; at most 1e9 are supported "
+                         f"(duration = {duration}, dt = {dt})")
+    n_total = int(round(n_total))
     if n_total < 400:
         raise ValueError(f"Parameters duration/dt give {n_total} samples but at least 400 are needed")
-    steps = int(steps)
-    if steps < 1:
-        raise ValueError(f"Parameter steps is {steps} but should be >= 1")
+    steps = _as_count(steps, "steps", 1)
     up = np.arange(1, steps + 1) / steps
     levels = A * np.concatenate([up, up[::-1][1:], [0.0], -up, -up[::-1][1:], [0.0]])
 

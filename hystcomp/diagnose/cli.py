@@ -52,7 +52,8 @@ def load_csv(path, time="t", input="v", output="y"):
     import csv
 
     try:
-        with open(path, newline="") as fh:
+        # utf-8-sig: Excel's "CSV UTF-8" starts with a byte-order mark
+        with open(path, newline="", encoding="utf-8-sig") as fh:
             rows = list(csv.reader(fh))
     except OSError as exc:
         raise ValueError(f"cannot read {path}: {exc.strerror or exc}") from None
@@ -166,6 +167,14 @@ def run(args):
             raise ValueError(f"--max-effects is {args.max_effects} but should be >= 0")
     except ValueError as exc:
         return _fail(f"error: {args.data}: {exc}")
+    if args.plots:
+        # before the diagnosis, not after it: a bad folder fails at once
+        from .._validation import check_output_folder
+
+        try:
+            check_output_folder(args.plots, "--plots")
+        except ValueError as exc:
+            return _fail(f"error: {exc}")
     try:
         rep = diagnose(t, v, y, validation=args.validation, max_effects=args.max_effects,
                        progress=not args.quiet)

@@ -9,7 +9,7 @@ from .._validation import check_choice
 from ..envelopes import Atanh, Identity, Linear, Polynomial, Tanh
 from ._records import _records, _apply_validation
 from .solver import _Problem
-from .weights import FitResult, fit_weights
+from .weights import FitResult, _check_data, fit_weights
 
 # envelopes by variable projection
 # ----------------------------------------------------------------------------
@@ -195,6 +195,8 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
         out.at_bound = []
         return out
     recs, _ = _records(v, y, sample_weight)
+    # a constant input has no scale to start the envelope search from
+    _check_data(recs, 1)
     if isinstance(envelope, tuple):
         make, x0, bounds = envelope
     elif asymmetric:

@@ -5,7 +5,7 @@ import warnings
 
 import numpy as np
 
-from .._validation import as_scalar, as_thresholds, check_choice
+from .._validation import as_scalar, as_thresholds, check_choice, check_simulates
 from ..envelopes import Atanh, Custom, Envelope, Identity, Linear, Polynomial, Tanh
 from ..inverses import tracking_error
 from ..models import GPI, MGPI, PI
@@ -443,6 +443,7 @@ def validate(model, v, y, offset=0.0, mask=None):
     if isinstance(model, FitResult):
         offset = model.offset
         model = model.model
+    check_simulates(model, "model")
     offset = as_scalar(offset, "offset")
     recs, multi = _records(v, y, None)
     if mask is None:
@@ -489,8 +490,12 @@ def compensation_error(true_model, estimated_model, u):
     >>> bool(0 < err["rms_percent"] < 5)
     True
     """
+    check_simulates(true_model, "true_model")
     if isinstance(estimated_model, FitResult):
         estimated_model = estimated_model.model
+    if not callable(getattr(estimated_model, "exact_inverse", None)):
+        raise TypeError(f"Parameter estimated_model is {estimated_model!r} but should be a hysteresis "
+                        "model with exact_inverse() (or a FitResult)")
     return tracking_error(true_model, estimated_model.exact_inverse(), u)
 
 
