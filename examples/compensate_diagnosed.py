@@ -1,5 +1,5 @@
 """Compensating what the diagnosis finds
-=======================================
+=====================================
 
 A record of an actuator with hidden creep (``hidden_effect_data("creep")``: a PI actuator
 whose output keeps moving after each step) is diagnosed; the diagnosis names creep and

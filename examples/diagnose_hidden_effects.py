@@ -1,5 +1,5 @@
 """Blind test of the diagnosis on the library's generator
-=======================================================
+======================================================
 
 Hide one effect, see whether it is named.  For each effect (and none) and each seed, :func:`hystcomp.datasets.hidden_effect_data`
 draws a random PI actuator, one mechanism of the effect with a random size,

@@ -1,5 +1,5 @@
 """Diagnose the measured piezo record
-===================================
+==================================
 
 The whole record of :func:`hystcomp.data.load_piezo` (Chandra et al. 2023)
 goes in: 3.26 s at 0 V, the voltage step, then the 1 Hz, +-150 V sine; the

@@ -25,6 +25,7 @@ import numpy as np
 import control as ct
 
 from . import _kernels as _k
+from ._validation import as_scalar
 from .models import MGPI, HysteresisModel, StopPI
 
 __all__ = ["HysteresisBlock", "CompensatorBlock", "SaturatedPID"]
@@ -527,9 +528,15 @@ class SaturatedPID(ct.NonlinearIOSystem):
     """
 
     def __init__(self, kp, ki, kd, dt, tau_d, output_limits, name="pid", inputs="e", outputs="u"):
-        self.kp, self.ki, self.kd = float(kp), float(ki), float(kd)
-        self.tau_d = float(tau_d)
-        lo, hi = float(output_limits[0]), float(output_limits[1])
+        self.kp, self.ki, self.kd = (as_scalar(x, n) for x, n in ((kp, "kp"), (ki, "ki"), (kd, "kd")))
+        dt = as_scalar(dt, "dt", positive=True)
+        self.tau_d = as_scalar(tau_d, "tau_d", positive=True)
+        try:
+            lo, hi = as_scalar(output_limits[0], "output_limits"), as_scalar(output_limits[1], "output_limits")
+        except (TypeError, IndexError, KeyError):
+            raise ValueError(f"Parameter output_limits is {output_limits!r} but should be (lo, hi)") from None
+        if not lo < hi:
+            raise ValueError(f"Parameter output_limits is {output_limits!r} but should satisfy lo < hi")
         self.output_limits = (lo, hi)
         a = float(np.exp(-dt / self.tau_d))
         self.A = np.array([[1.0, 0.0], [0.0, a]])

@@ -487,13 +487,7 @@ def pid(kp, ki, kd, dt, tau_d=None, output_limits=None, name="pid", inputs="e", 
         C = np.array([[ki, -kd / tau]])
         D = np.array([[kp + ki * dt + kd / tau]])
         return ct.ss(A, B, C, D, dt, inputs=inputs, outputs=outputs, name=name, states=["I", "f"])
-    try:
-        lo, hi = float(output_limits[0]), float(output_limits[1])
-    except (TypeError, IndexError, ValueError):
-        raise ValueError(f"Parameter output_limits is {output_limits!r} but should be (lo, hi)") from None
-    if not lo < hi:
-        raise ValueError(f"Parameter output_limits is {output_limits!r} but should satisfy lo < hi")
-    return SaturatedPID(kp, ki, kd, dt, tau, (lo, hi), name=name, inputs=inputs, outputs=outputs)
+    return SaturatedPID(kp, ki, kd, dt, tau, output_limits, name=name, inputs=inputs, outputs=outputs)
 
 
 # ----------------------------------------------------------------------------

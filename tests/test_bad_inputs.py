@@ -38,6 +38,8 @@ _SIGNAL = [
     ([1 + 1j, 2.0], NEVER), (object(), NEVER), ([], MAYBE), ([0.5], MAYBE), ([1e18, -1e18], MAYBE),
     ([1e-300, 0.0], MAYBE),
 ]
+# models simulate a 2-D input (samples x signals) as a batch: only 3-D is bad
+_SIGNAL_OR_BATCH = [x for x in _SIGNAL if np.ndim(x[0]) != 2] + [(np.zeros((2, 2, 2)), NEVER)]
 _THRESHOLDS = [
     ([1.0, np.nan], NEVER), ([np.inf], NEVER), ("abc", NEVER), ([[1.0, 2.0]], MAYBE), ([1j], NEVER),
     ([], NEVER), ([2.0, 1.0], NEVER), ([1.0, 1.0], NEVER), ([-1.0], NEVER), ([0.0], MAYBE), (None, NEVER),
@@ -98,7 +100,7 @@ CASES = {
     "GPI": (GPI, dict(thresholds=[0.5], weights=[0.4], envelope_left=Tanh(2.0, 1.0), envelope_right=Tanh(3.0, 1.0)),
             dict(thresholds=_THRESHOLDS, weights=_WEIGHTS, envelope_left=_ENVELOPE, envelope_right=_ENVELOPE)),
     "PI.simulate": (lambda v, initial_state=None: _pi().simulate(v, initial_state=initial_state),
-                    dict(v=_v), dict(v=_SIGNAL, initial_state=[([np.nan, 0.0], NEVER), ([np.inf, 0.0], NEVER),
+                    dict(v=_v), dict(v=_SIGNAL_OR_BATCH, initial_state=[([np.nan, 0.0], NEVER), ([np.inf, 0.0], NEVER),
                                                                 ([0.0], NEVER), ("ab", NEVER),
                                                                 ([0.0, 0.0, 0.0], NEVER)])),
     "PI.exact_inverse().simulate": (lambda u: _pi().exact_inverse().simulate(u), dict(u=_v), dict(u=_SIGNAL)),
@@ -193,6 +195,14 @@ CASES.update({
                     dict(v=_SIGNAL[:6], y=_SIGNAL[:6], thresholds=_THRESHOLDS[:-1], model=_CHOICE)),
     "validate": (_idf.validate, dict(model=_pi(), v=_v, y=_y),
                  dict(model=_MODEL, v=_SIGNAL[:6], y=_SIGNAL[:6], offset=_SCALAR[:7])),
+    "HysteresisBlock": (_io.HysteresisBlock, dict(model=_pi()),
+                        dict(model=_MODEL, actuator_gain=_SCALAR[:7], dt=_DT)),
+    "CompensatorBlock": (_io.CompensatorBlock, dict(compensator=_pi().exact_inverse()),
+                         dict(compensator=_MODEL, nominal_gain=_SCALAR[:7], dt=_DT)),
+    "SaturatedPID": (_io.SaturatedPID, dict(kp=1.0, ki=10.0, kd=0.001, dt=1e-3, tau_d=1e-3,
+                                            output_limits=(-1.0, 1.0)),
+                     dict(kp=_SCALAR[:7], ki=_SCALAR[:7], kd=_SCALAR[:7], dt=_DT, tau_d=_SCALAR[:7],
+                          output_limits=_LIMITS)),
     "compensation_error": (_idf.compensation_error, dict(true_model=_pi(), estimated_model=_pi(), u=_v),
                            dict(true_model=_MODEL, estimated_model=_MODEL, u=_SIGNAL[:6])),
 })

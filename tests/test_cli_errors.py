@@ -118,7 +118,7 @@ def test_diagnose_a_folder_as_data_exits_2(tmp_path, capsys):
 
 
 def test_unexpected_failure_is_one_line_exit_1(tmp_path, capsys, monkeypatch):
-    def boom(out, echo=print, dt=None):
+    def boom(out, echo=print, dt=None, quiet=False):
         raise RuntimeError("simulated internal failure")
 
     monkeypatch.setattr(cli, "reproduce", boom)
@@ -128,7 +128,7 @@ def test_unexpected_failure_is_one_line_exit_1(tmp_path, capsys, monkeypatch):
     assert "hystcomp thesis" in err[0] and "RuntimeError" in err[0] and "simulated internal failure" in err[0]
     assert "--debug" in err[0]
     # bad input raised deep inside is reported as such, exit 2
-    monkeypatch.setattr(cli, "reproduce", lambda out, echo=print, dt=None: float("x"))
+    monkeypatch.setattr(cli, "reproduce", lambda out, echo=print, dt=None, quiet=False: float("x"))
     assert cli.main(["thesis", "--out", str(tmp_path / "o")]) == 2
     err = capsys.readouterr().err.strip()
     assert "ValueError" in err and "Traceback" not in err

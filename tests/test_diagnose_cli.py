@@ -154,3 +154,25 @@ def test_through_the_hystcomp_command(drift_csv, tmp_path):
     proc = subprocess.run([sys.executable, "-m", "hystcomp.diagnose", bad, "--json"],
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 2 and len(proc.stderr.strip().splitlines()) == 1
+
+
+def test_several_files_on_two_processes(tmp_path, capsys):
+    # several records, diagnosed independently (on an executor with --jobs): a JSON list
+    # naming each file, the same answers as one file at a time
+    from hystcomp.datasets import hidden_effect_data
+
+    paths = []
+    for effect in ("drift", None):
+        d = hidden_effect_data(effect, seed=3, dt=0.01)
+        paths.append(_write(tmp_path / f"{effect}.csv", ["t", "v", "y"], zip(d.t, d.v, d.y)))
+    status, out, err = _run([*map(str, paths), "--json", "--jobs", "2", "--plots", str(tmp_path / "figs")],
+                            capsys)
+    assert status == 0, err
+    js = json.loads(out)
+    assert [r["file"] for r in js] == [str(p) for p in paths]
+    assert js[0]["effects"][:1] == ["drift"] and js[1]["effects"] == []
+    one = json.loads(_run([str(paths[0]), "--json", "--quiet"], capsys)[1])
+    assert one["effects"] == js[0]["effects"] and one["rms_heldout"] == pytest.approx(js[0]["rms_heldout"])
+    assert (tmp_path / "figs" / "drift" / "diagnose_gap.png").exists()
+    status, _, err = _run([str(paths[0]), str(tmp_path / "missing.csv")], capsys)
+    assert status == 2 and "missing.csv" in err and "Traceback" not in err

@@ -1,6 +1,8 @@
 """Command line: ``hystcomp diagnose DATA.csv [--no-time] [--json] [--plots DIR]``."""
 
 import argparse
+import json
+import os
 import math
 import sys
 
@@ -111,10 +113,13 @@ def add_arguments(parser):
     --------
     >>> import argparse
     >>> args = add_arguments(argparse.ArgumentParser()).parse_args(["data.csv", "--max-effects", "1"])
-    >>> args.data, args.max_effects, args.validation
-    ('data.csv', 1, 0.3)
+    >>> args.data, args.max_effects, args.validation, args.jobs
+    (['data.csv'], 1, 0.3, 1)
     """
-    parser.add_argument("data", metavar="DATA.csv", help="CSV file with a header row")
+    parser.add_argument("data", metavar="DATA.csv", nargs="+",
+                        help="CSV file(s) with a header row; several files are diagnosed independently")
+    parser.add_argument("--jobs", type=int, default=1,
+                        help="diagnose several files on this many processes (default 1)")
     parser.add_argument("--time", default="t", help="time column [s] (default t)")
     parser.add_argument("--no-time", action="store_true",
                         help="the record has no time axis (a quasi-static point sequence such as a B-H "
@@ -152,21 +157,15 @@ def run(args):
     >>> run(args)   # prints "hystcomp diagnose: error: cannot read no-such-file.csv: ..." on stderr
     2
     """
-    from . import diagnose
-
-    try:
-        t, v, y = load_csv(args.data, None if args.no_time else args.time, args.input, args.output)
-    except ValueError as exc:
-        return _fail(f"error: {exc}")
-    from .record import Record
-
-    try:
-        # what is wrong with the record itself (or the options) is the user's to fix
-        Record(t, v, y, args.validation)
-        if args.max_effects < 0:
-            raise ValueError(f"--max-effects is {args.max_effects} but should be >= 0")
-    except ValueError as exc:
-        return _fail(f"error: {args.data}: {exc}")
+    files = list(args.data) if isinstance(args.data, (list, tuple)) else [args.data]
+    if int(getattr(args, "jobs", 1)) < 1:
+        return _fail(f"error: --jobs is {args.jobs} but should be >= 1")
+    records = []
+    for path in files:
+        try:
+            records.append(_load(args, path))
+        except ValueError as exc:
+            return _fail(f"error: {exc}")
     if args.plots:
         # before the diagnosis, not after it: a bad folder fails at once
         from .._validation import check_output_folder
@@ -175,26 +174,68 @@ def run(args):
             check_output_folder(args.plots, "--plots")
         except ValueError as exc:
             return _fail(f"error: {exc}")
+    options = dict(validation=args.validation, max_effects=args.max_effects)
     try:
-        rep = diagnose(t, v, y, validation=args.validation, max_effects=args.max_effects,
-                       progress=not args.quiet)
+        if len(files) == 1:
+            reps = [_diagnose(records[0], options, not args.quiet)]
+        else:
+            from .many import diagnose_many
+
+            if args.jobs > 1:
+                from concurrent.futures import ProcessPoolExecutor
+
+                with ProcessPoolExecutor(args.jobs) as ex:
+                    reps = diagnose_many(records, executor=ex, progress=False, **options)
+            else:
+                reps = diagnose_many(records, progress=not args.quiet, **options)
     except Exception as exc:   # an internal limit or bug: one line, never a traceback
-        return _fail(f"internal error while diagnosing {args.data} ({type(exc).__name__}: {exc}); "
-                     "the record itself was read fine -- please report this")
+        return _fail(f"internal error while diagnosing {', '.join(files)} ({type(exc).__name__}: {exc}); "
+                     "the records themselves were read fine -- please report this")
     try:
         if args.plots:
             import matplotlib
 
             matplotlib.use("Agg")
-            for p in rep.save_plots(args.plots):
-                print(f"wrote {p}", file=sys.stderr)
+            for path, rep in zip(files, reps):
+                folder = args.plots if len(files) == 1 else os.path.join(
+                    args.plots, os.path.splitext(os.path.basename(path))[0])
+                for p in rep.save_plots(folder):
+                    print(f"wrote {p}", file=sys.stderr)
     except Exception as exc:
         return _fail(f"error: cannot write the figures to {args.plots} ({type(exc).__name__}: {exc})")
     if args.json:
-        print(rep.to_json())
+        if len(files) == 1:
+            print(reps[0].to_json())
+        else:
+            print(json.dumps([{"file": path, **rep.to_dict()} for path, rep in zip(files, reps)]))
     else:
-        print(rep.report())
+        for path, rep in zip(files, reps):
+            if len(files) > 1:
+                print(f"== {path}")
+            print(rep.report())
     return 0
+
+
+def _load(args, path):
+    """The record of one file, checked (ValueError naming the file)."""
+    from .record import Record
+
+    t, v, y = load_csv(path, None if args.no_time else args.time, args.input, args.output)
+    try:
+        # what is wrong with the record itself (or the options) is the user's to fix
+        Record(t, v, y, args.validation)
+        if args.max_effects < 0:
+            raise ValueError(f"--max-effects is {args.max_effects} but should be >= 0")
+    except ValueError as exc:
+        raise ValueError(f"{path}: {exc}") from None
+    return t, v, y
+
+
+def _diagnose(record, options, progress):
+    from . import diagnose
+
+    t, v, y = record
+    return diagnose(t, v, y, progress=progress, **options)
 
 
 def _fail(msg):
