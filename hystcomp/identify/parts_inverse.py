@@ -15,9 +15,15 @@ part the model contains that can be inverted causally:
 - the output bends ``a H^2``, ``c H^3`` of the driving model's output H;
 - the output maps (smooth saturation, clipping: references beyond the clip are clipped).
 
-A dead time, a lag or a resonance after or before the hysteresis has no causal inverse of the
-same order; :meth:`PartsInverse.simulate` names the part in its error (compensate a dead time
-with preview: the reference shifted that many samples earlier).
+- first-order lags before and after the hysteresis (rate dependence): both discretisations
+  have a direct feedthrough, so the current input still moves the current output and the
+  lag is inverted with its state (the inverse is a lead: it amplifies fast reference changes,
+  up to ``1/(1 - a)`` for the lag before and ``1/b0`` for the lag after, ``b0`` the
+  first-order-hold coefficient of :meth:`hystcomp.effects.LinearStage.lag`).
+
+A dead time cannot be inverted causally, and the resonance's Tustin discretisation has its
+zeros at z = -1 (an unstable inverse); :class:`PartsInverse` names the part in its error
+(compensate a dead time with preview: the reference shifted that many samples earlier).
 """
 
 import math
@@ -29,9 +35,8 @@ __all__ = ["PartsInverse", "NOT_CAUSAL"]
 #: parts without a causal inverse, and what to do instead
 NOT_CAUSAL = {
     "delay": "a dead time cannot be inverted causally; shift the reference earlier by the delay (preview)",
-    "input_lag": "a lag before the hysteresis has no causal inverse of the same order",
-    "output_lag": "a lag after the hysteresis has no causal inverse of the same order",
-    "output_resonance": "a resonance after the hysteresis has no causal inverse of the same order",
+    "output_resonance": ("the resonance's bilinear (Tustin) discretisation puts both zeros at z = -1, so its "
+                         "inverse is unstable; compensate the mode with a notch in the loop instead"),
 }
 
 
@@ -71,11 +76,31 @@ class _Stepper:
         theta = model.theta
         k = self.r.size
         self.w_core = theta[:k]
-        # gain (filter slot): a known multiplier per sample
-        self.gain = np.ones(n)
+        # input slot: lags of the core's input, a_j L + (1 - a_j) x (lag_bank, at rest at the
+        # first sample); the core and its rate see the lagged input, the additive parts the input
+        self.input_lags = []
         for p in st.parts:
-            if p.slot == "filter":
-                self.gain = p.filter(self.gain[:, None], vals.get(p.kind, {}), self.ctx_n)[:, 0]
+            if p.slot == "input":
+                self.input_lags.append(math.exp(-ctx.dt / vals[p.kind]["time_constant"]))
+        # filter slot, in the parts' order: a known multiplier per sample (gain drift) or a
+        # linear stage with feedthrough (the output lag: x' = A x + B h, y = C x + D h, D > 0),
+        # started at the steady state of its first input as the fit's columns are
+        self.filters = []
+        for p in st.parts:
+            if p.slot != "filter":
+                continue
+            if p.kind == "output_lag":
+                from ..effects import LinearStage
+
+                stage = LinearStage.lag(vals[p.kind]["time_constant"], ctx.dt)
+                x_ss = np.linalg.solve(np.eye(stage.n_states) - stage.A, stage.B).ravel()
+                self.filters.append(("stage", (np.asarray(stage.A, dtype=np.float64),
+                                               np.asarray(stage.B, dtype=np.float64).ravel(),
+                                               np.asarray(stage.C, dtype=np.float64).ravel(),
+                                               float(np.asarray(stage.D).ravel()[0]), x_ss)))
+            else:
+                g = p.filter(np.ones((n, 1)), vals.get(p.kind, {}), self.ctx_n)[:, 0]
+                self.filters.append(("gain", g))
         # additive parts: known in time, or creep (lags with states)
         self.known = np.zeros(n)
         self.creep = []
@@ -117,6 +142,8 @@ class _Stepper:
             self.w = self._plays(np.array([u]), self.w, rate=0.0)[0]
         self.prev = None
         self.k = 0
+        self.input_state = [None] * len(self.input_lags)
+        self.filter_state = [None] * len(self.filters)
         self.lag_in = [None] * len(self.creep)
         self.lag_out = [None] * len(self.creep)
         for c in self.creep:
@@ -141,12 +168,29 @@ class _Stepper:
         """Model output (in the model's sign) for trial scaled inputs x (m,) at the current
         sample; with commit, advance the states with x (one value)."""
         k = self.k
+        xc, new_input = x, []
+        for i, a in enumerate(self.input_lags):
+            L = self.input_state[i]
+            xc = xc if L is None else a * L + (1.0 - a) * xc
+            new_input.append(xc)
         if self.prev is None or self.dt is None:
             rate = np.zeros_like(x)
         else:
-            rate = np.abs(x - self.prev) / self.dt
-        W = self._plays(x, self.w, rate)
-        u = (W @ self.w_core) * self.gain[k] + self.known[k]
+            rate = np.abs(xc - self.prev) / self.dt
+        W = self._plays(xc, self.w, rate)
+        h = W @ self.w_core
+        new_filter = []
+        for i, (kind, f) in enumerate(self.filters):
+            if kind == "gain":
+                h = h * f[k]
+                new_filter.append(None)
+                continue
+            A, B, C, D, x_ss = f
+            X = self.filter_state[i]
+            X = h[:, None] * x_ss[None, :] if X is None else np.broadcast_to(X, (h.size, X.size))
+            new_filter.append(X @ A.T + h[:, None] * B[None, :])
+            h = X @ C + D * h
+        u = h + self.known[k]
         new_in, new_out, drv_out = [], [], []
         for i, (a, w_in, w_out, driver) in enumerate(self.creep):
             L = self.lag_in[i]
@@ -170,7 +214,12 @@ class _Stepper:
         y = y + self.after[k]
         if commit:
             self.w = W[0].copy()
-            self.prev = float(x[0])
+            self.prev = float(xc[0])
+            for i in range(len(self.input_lags)):
+                self.input_state[i] = float(new_input[i][0])
+            for i, X in enumerate(new_filter):
+                if X is not None:
+                    self.filter_state[i] = X[0].copy()
             for i, (a, w_in, w_out, driver) in enumerate(self.creep):
                 self.lag_in[i] = new_in[i][0].copy()
                 if driver is not None:

@@ -459,7 +459,7 @@ class PartsModel:
         Raises
         ------
         ValueError
-            Naming a part without a causal inverse (dead time, lags,
+            Naming a part without a causal, stable inverse (dead time,
             resonance).
         """
         from .parts_inverse import PartsInverse
