@@ -1,0 +1,261 @@
+"""Model parts of the hysteresis core (:mod:`hystcomp.identify.parts`): the PI
+core and the offset that every model has, and the options of the core's plays
+(rate-dependent, level-dependent and asymmetric thresholds, saturating
+envelopes, eq. 23, and an initial state).
+"""
+
+
+import numpy as np
+
+from ._part_kernels import core_columns
+from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
+
+__all__ = ["PICore", "Offset", "RateThresholds", "Asymmetry", "LevelThresholds", "Saturation", "InitialState"]
+
+
+# ----------------------------------------------------------------------------
+# parts every model has
+# ----------------------------------------------------------------------------
+class PICore(Part):
+    """The PI core (eq. 18): ``p0 x + sum_i p_i F_{r_i}[x]`` with
+    thresholds ``r_i = i/N`` of the scaled input (up to the full input span,
+    so a unipolar record's first loading curve is covered), weights >= 0.
+    Core-slot parts turn the plays into modified plays (eq. 23).
+
+    Examples
+    --------
+    >>> ctx = Context(np.sin(np.linspace(0, 6, 50)), None, 0.0, 1.0, None, n_thresholds=4)
+    >>> PICore().core(ctx.x, {}, ctx).shape
+    (50, 4)
+    """
+
+    kind = "core"
+    slot = "core"
+    description = "PI core (plays up to the full input span)"
+
+    def core(self, x, options, ctx):
+        """Columns of the (modified) plays for the scaled input `x` and the
+        options set by the core-slot parts."""
+        out = np.empty((x.size, ctx.thresholds.size))
+        beta = float(options.get("beta", 0.0))
+        inv_dt = 1.0 / ctx.dt if ctx.dt else 0.0
+        pre = np.asarray(options.get("preload", ()), dtype=np.float64)
+        if pre.size:
+            pre = np.append(pre, x[0] if x.size else 0.0)
+        core_columns(np.ascontiguousarray(x), ctx.thresholds, beta, inv_dt, float(options.get("rho", 1.0)),
+                     float(options.get("ql", 0.0)), float(options.get("qr", 0.0)), float(options.get("bl", 0.0)),
+                     float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)),
+                     float(options.get("level", 0.0)))
+        return out
+
+
+class Offset(Part):
+    """A constant output offset (free sign).
+
+    Examples
+    --------
+    >>> Offset().columns({}, Context(np.zeros(3), None, 0.0, 1.0, None))[0].ravel().tolist()
+    [1.0, 1.0, 1.0]
+    """
+
+    kind = "offset"
+    slot = "additive"
+    order = 99
+    description = "output offset"
+
+    def columns(self, values, ctx):
+        return np.ones((ctx.n, 1)), np.array([-np.inf]), np.array([np.inf]), ["offset"]
+
+
+# ----------------------------------------------------------------------------
+# the core's plays
+# ----------------------------------------------------------------------------
+@register
+class RateThresholds(Part):
+    """Rate-dependent thresholds ``r_i + beta |dv/dt|`` (Al Janaideh et al.
+    2009); the parameter is ``beta`` times the record's largest input rate
+    over the input scale (dimensionless).
+
+    Examples
+    --------
+    >>> ctx = Context(np.linspace(0, 1, 11), 0.1, 0.0, 1.0, 1.1)
+    >>> opts = {}
+    >>> RateThresholds().core_options({"relative_rate_coefficient": 0.1}, ctx, opts)   # rate 1 / s
+    >>> round(opts["beta"], 6)
+    0.1
+    """
+
+    effect = "rate_dependence"
+    kind = "rate_thresholds"
+    slot = "core"
+    order = 10
+    needs_time = True
+    description = "rate-dependent thresholds r_i + beta |dv/dt|"
+
+    def _rate_max(self, ctx):
+        return float(np.max(np.abs(np.diff(ctx.x)))) / ctx.dt or 1.0
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("relative_rate_coefficient", 0.05, 1e-4, 3.0, True)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"relative_rate_coefficient": c} for c in (0.003, 0.01, 0.03, 0.1, 0.3, 1.0)]
+
+    def core_options(self, values, ctx, options):
+        options["beta"] = values["relative_rate_coefficient"] / self._rate_max(ctx)
+
+    def describe(self, values):
+        return {"part": self.description, "relative_rate_coefficient":
+                float(f"{values['relative_rate_coefficient']:.4g}")}
+
+
+@register
+class Asymmetry(Part):
+    """Asymmetric envelopes (eq. 23 with gl != gr): ``gl(s) = rho (s + q_l s^2)``,
+    ``gr(s) = s + q_r s^2`` (scaled input); with :class:`Saturation` in the
+    model the two envelopes saturate differently (``b_l = b (1 + skew)``,
+    ``b_r = b (1 - skew)``): asymmetry together with saturation.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> [p.name for p in Asymmetry().parameters(ctx, {"saturation_envelope"})]
+    ['rho', 'q_left', 'q_right', 'skew']
+    """
+
+    effect = "asymmetry"
+    kind = "asymmetric_envelopes"
+    slot = "core"
+    order = 30
+    description = "asymmetric mGPI envelopes"
+
+    def parameters(self, ctx, kinds):
+        ps = [Parameter("rho", 1.0, 0.4, 2.5, True), Parameter("q_left", 0.0, -0.25, 0.25, False),
+              Parameter("q_right", 0.0, -0.25, 0.25, False)]
+        if "saturation_envelope" in kinds:
+            ps.append(Parameter("skew", 0.0, -0.7, 0.7, False))
+        return ps
+
+    def initial_values(self, ctx, kinds):
+        base = {p.name: p.initial for p in self.parameters(ctx, kinds)}
+        out = []
+        for rho in (0.7, 1.0, 1.4):
+            for q in (-0.1, 0.1):
+                out.append({**base, "rho": rho, "q_left": q, "q_right": -q})
+        return out
+
+    def core_options(self, values, ctx, options):
+        options["rho"] = values["rho"]
+        options["ql"] = values["q_left"]
+        options["qr"] = values["q_right"]
+        options["skew"] = values.get("skew", 0.0)
+
+
+@register
+class LevelThresholds(Part):
+    """Thresholds that grow (or shrink) with the input level,
+    ``r_i max(1 + k x, 0.05)`` with ``x`` the scaled input (``|x| <= 1``):
+    the loop is wider at one end of the stroke than at the other, an
+    asymmetry that envelopes shared by all plays do not draw.  It is the
+    static counterpart of the rate-dependent thresholds ``r_i + beta
+    |dv/dt|`` of Al Janaideh et al. (2009), and a generalized play (eq. 23)
+    whose envelope slopes ``1 -/+ k r_i`` depend on the threshold.
+
+    Examples
+    --------
+    >>> opts = {}
+    >>> LevelThresholds().core_options({"level_coefficient": 0.3}, None, opts)
+    >>> opts["level"]
+    0.3
+    """
+
+    effect = "asymmetry"
+    kind = "level_thresholds"
+    slot = "core"
+    order = 35
+    description = "thresholds growing with the input level r_i (1 + k x)"
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("level_coefficient", 0.0, -0.9, 0.9, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"level_coefficient": k} for k in (-0.4, -0.15, 0.15, 0.4)]
+
+    def core_options(self, values, ctx, options):
+        options["level"] = values["level_coefficient"]
+
+
+@register
+class Saturation(Part):
+    """Saturating envelope ``gamma(s) = tanh(b s)/b`` (eq. 25) on both sides
+    of the plays (scaled input).
+
+    Examples
+    --------
+    >>> opts = {}
+    >>> Saturation().core_options({"b": 1.0}, None, opts)
+    >>> opts["bl"], opts["br"]
+    (1.0, 1.0)
+    """
+
+    effect = "saturation"
+    kind = "saturation_envelope"
+    slot = "core"
+    order = 40
+    description = "saturating mGPI envelope tanh(b v)/b"
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("b", 0.8, 0.02, 4.0, True)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"b": b} for b in (0.2, 0.6, 1.2, 2.5)]
+
+    def core_options(self, values, ctx, options):
+        skew = options.get("skew", 0.0)
+        options["bl"] = values["b"] * (1.0 + skew)
+        options["br"] = values["b"] * (1.0 - skew)
+
+
+@register
+class InitialState(Part):
+    """Unknown memory at the record's start: the plays start from the
+    state a preload history leaves, the virgin state driven to ``u1`` and
+    ``u2`` (scaled input) before the first sample.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> opts = {}
+    >>> InitialState().core_options({"u1": 0.5, "u2": -0.2}, ctx, opts)
+    >>> opts["preload"]
+    [0.5, -0.2]
+    """
+
+    effect = "initial_state"
+    kind = "initial_state"
+    slot = "core"
+    order = 90
+    description = "preload history before the record (the plays' initial state)"
+
+    def parameters(self, ctx, kinds):
+        lo, hi = float(ctx.x.min()), float(ctx.x.max())
+        w = hi - lo
+        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False),
+                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = float(ctx.x.min()), float(ctx.x.max())
+        x0 = float(ctx.x[0])
+        out = []
+        for u1 in (lo, hi):
+            for f in (0.0, 0.5, 1.0):
+                u2 = x0 + f * ((hi if u1 == lo else lo) - x0)
+                out.append({"u1": u1, "u2": u2})
+        return out
+
+    def core_options(self, values, ctx, options):
+        options["preload"] = [values["u1"], values["u2"]]
+
+    def describe(self, values):
+        return {"part": self.description, "preload_scaled": [float(f"{values['u1']:.4g}"),
+                                                            float(f"{values['u2']:.4g}")]}

@@ -1,0 +1,412 @@
+"""Model parts with time (:mod:`hystcomp.identify.parts`): dead time and lags
+before the hysteresis, lags, resonance and gain drift after it, creep, output
+bends, drift and sensor drift.
+"""
+
+import math
+
+import numpy as np
+
+from ..effects import LinearStage, lag_bank
+from ._part_kernels import fractional_delay
+from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
+
+__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "Creep", "OutputQuadratic",
+           "OutputCubic", "Drift", "SensorDrift"]
+
+
+# ----------------------------------------------------------------------------
+# input side
+# ----------------------------------------------------------------------------
+@register
+class Delay(Part):
+    """Dead time before the hysteresis, in fractional samples (linear
+    interpolation): ``x(t - delay)``.
+
+    Examples
+    --------
+    >>> ctx = Context(np.arange(5.0), 1.0, 0.0, 1.0, 5.0)
+    >>> Delay().transform(ctx.x, {"delay": 1.5}, ctx).tolist()
+    [0.0, 0.0, 0.5, 1.5, 2.5]
+    """
+
+    effect = "delay"
+    kind = "delay"
+    slot = "input"
+    order = 10
+    needs_time = True
+    description = "dead time before the hysteresis"
+
+    def _max(self, ctx):
+        return float(min(max(20.0, 0.002 * ctx.n), 0.05 * ctx.n))
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("delay", 1.0, 0.0, self._max(ctx), False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"delay": d} for d in np.geomspace(0.5, self._max(ctx), 5)]
+
+    def transform(self, x, values, ctx):
+        out = np.empty_like(x)
+        fractional_delay(np.ascontiguousarray(x), float(values["delay"]), out)
+        return out
+
+    def describe(self, values):
+        return {"part": self.description, "delay_samples": float(f"{values['delay']:.4g}")}
+
+
+def _lag_bounds(ctx):
+    lo = 0.3 * ctx.dt
+    hi = max(50 * ctx.dt, min(0.5, ctx.duration / 20))
+    return lo, hi
+
+
+@register
+class InputLag(Part):
+    """A first-order lag before the hysteresis (time constant [s]).
+
+    Examples
+    --------
+    >>> ctx = Context(np.ones(3), 1.0, 0.0, 1.0, 3.0)
+    >>> np.round(InputLag().transform(ctx.x, {"time_constant": 1.0}, ctx), 3).tolist()
+    [1.0, 1.0, 1.0]
+    """
+
+    effect = "rate_dependence"
+    kind = "input_lag"
+    slot = "input"
+    order = 20
+    needs_time = True
+    description = "first-order lag before the hysteresis"
+
+    def parameters(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [Parameter("time_constant", 3 * ctx.dt, lo, hi, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [{"time_constant": t} for t in np.geomspace(lo * 2, hi, 5)]
+
+    def transform(self, x, values, ctx):
+        # at rest at the first sample (the record starts in a steady state)
+        return lag_bank(x, [values["time_constant"]], ctx.dt, state=[x[0]])[0][:, 0].copy()
+
+
+# ----------------------------------------------------------------------------
+# after the core
+# ----------------------------------------------------------------------------
+def _steady_filter(stage, cols):
+    """Filter every column through `stage`, starting at the steady state of
+    the first sample (the record starts at rest)."""
+    I = np.eye(stage.n_states)
+    x_ss = np.linalg.solve(I - stage.A, stage.B).ravel()
+    states = cols[0][:, None] * x_ss[None, :]
+    return stage.filter_columns(cols, states)[0]
+
+
+@register
+class OutputLag(Part):
+    """A first-order lag after the hysteresis (time constant [s]).
+
+    Examples
+    --------
+    >>> ctx = Context(np.ones(4), 0.1, 0.0, 1.0, 0.4)
+    >>> OutputLag().filter(np.ones((4, 2)), {"time_constant": 0.2}, ctx)[:, 0].round(6).tolist()
+    [1.0, 1.0, 1.0, 1.0]
+    """
+
+    effect = "rate_dependence"
+    kind = "output_lag"
+    slot = "filter"
+    order = 10
+    needs_time = True
+    description = "first-order lag after the hysteresis"
+
+    def parameters(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [Parameter("time_constant", 3 * ctx.dt, lo, hi, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [{"time_constant": t} for t in np.geomspace(lo * 2, hi, 5)]
+
+    def filter(self, columns, values, ctx):
+        return _steady_filter(LinearStage.lag(values["time_constant"], ctx.dt), columns)
+
+
+@register
+class OutputResonance(Part):
+    """A lightly damped mode after the hysteresis (frequency [Hz], damping).
+
+    Examples
+    --------
+    >>> ctx = Context(np.ones(4), 0.01, 0.0, 1.0, 0.04)
+    >>> [p.name for p in OutputResonance().parameters(ctx, set())]
+    ['frequency', 'damping']
+    """
+
+    effect = "rate_dependence"
+    kind = "output_resonance"
+    slot = "filter"
+    order = 20
+    needs_time = True
+    description = "resonance after the hysteresis"
+
+    def _band(self, ctx):
+        hi = 0.3 / ctx.dt
+        lo = min(max(5.0 / ctx.duration, 1e-3 / ctx.dt), hi / 4)
+        return lo, hi
+
+    def parameters(self, ctx, kinds):
+        lo, hi = self._band(ctx)
+        return [Parameter("frequency", math.sqrt(lo * hi), lo, hi, True),
+                Parameter("damping", 0.15, 0.01, 1.5, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = self._band(ctx)
+        return [{"frequency": f, "damping": z} for f in np.geomspace(lo, hi, 16) for z in (0.05, 0.15, 0.4)]
+
+    def filter(self, columns, values, ctx):
+        return _steady_filter(LinearStage.resonance(values["frequency"], values["damping"], ctx.dt), columns)
+
+
+@register
+class GainDrift(Part):
+    """A gain that changes over the record, ``(1 + g (s(t) - 1/2))`` times
+    the hysteresis, with ``s(t) = (1 - exp(-t/tau)) / (1 - exp(-T/tau))``
+    rising from 0 to 1 over the record: an exponential approach (an
+    actuator warming up with time constant tau [s]), linear in time for
+    tau >> T.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), 1.0, 0.0, 1.0, 2.0)
+    >>> GainDrift().filter(np.ones((3, 1)), {"g": 0.2, "time_constant": 1e6}, ctx).ravel().round(6).tolist()
+    [0.9, 1.0, 1.1]
+    """
+
+    effect = "gain_drift"
+    kind = "gain_drift"
+    slot = "filter"
+    order = 90
+    needs_time = True
+    description = "gain changing in time 1 + g (s(t) - 1/2), s rising 0 -> 1 with time constant tau"
+
+    def parameters(self, ctx, kinds):
+        T = ctx.duration
+        return [Parameter("g", 0.0, -0.6, 0.6, False),
+                Parameter("time_constant", 3.0 * T, 0.02 * T, 20.0 * T, True)]
+
+    def initial_values(self, ctx, kinds):
+        T = ctx.duration
+        return [{"g": g, "time_constant": f * T} for g in (-0.1, 0.1) for f in (0.1, 0.3, 20.0)]
+
+    def filter(self, columns, values, ctx):
+        tau = values.get("time_constant", 1e6 * ctx.duration)
+        s = np.expm1(-ctx.time / tau) / np.expm1(-ctx.duration / tau)
+        return columns * (1.0 + values["g"] * (s - 0.5))[:, None]
+
+
+# ----------------------------------------------------------------------------
+# additive parts
+# ----------------------------------------------------------------------------
+@register
+class Creep(Part):
+    """Creep: first-order lags on a logarithmic grid of time constants from
+    ``max(20 dt, T/2000)`` to ``T/4`` (Kuhnen's creep operator,
+    :class:`hystcomp.effects.CreepOperator`) of the input and of the current
+    model's output (frozen when the part is tried: creep driven by the
+    hysteresis output), coefficients >= 0 (the output keeps moving in the
+    direction of the last step).  No nonlinear parameter.
+
+    Examples
+    --------
+    >>> ctx = Context(np.ones(100), 0.1, 0.0, 1.0, 10.0)
+    >>> cols, lower, upper, names = Creep().columns({}, ctx)
+    >>> cols.shape[0], bool(np.all(lower == 0))
+    (100, True)
+    """
+
+    effect = "creep"
+    kind = "creep_lags"
+    slot = "additive"
+    order = 10
+    needs_time = True
+    description = "creep operators (lags of the input and of the hysteresis output)"
+
+    def __init__(self):
+        self.driver = None
+
+    def attach(self, model):
+        self.driver = model
+
+    def time_constants(self, ctx):
+        hi = max(ctx.duration / 4, 10 * ctx.dt)
+        lo = min(max(20 * ctx.dt, ctx.duration / 2000), hi / 10)
+        m = max(3, int(round(np.log10(hi / lo) * 2)) + 1)
+        return np.geomspace(lo, hi, m)
+
+    def columns(self, values, ctx):
+        tau = self.time_constants(ctx)
+        X = lag_bank(ctx.x, tau, ctx.dt, state=np.full(tau.size, ctx.x[0]))[0]
+        names = [f"creep_input_{t:.3g}s" for t in tau]
+        if self.driver is not None:
+            h = self._driver_output(ctx)
+            # lags minus the driver itself: only the creeping part, no copy of the driver
+            Y = lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0] - h[:, None]
+            X = np.column_stack([X, -Y])
+            names += [f"creep_output_{t:.3g}s" for t in tau]
+        k = X.shape[1]
+        return X, np.zeros(k), np.full(k, np.inf), names
+
+    def describe(self, values):
+        return {"part": self.description}
+
+
+class _OutputBend(Part):
+    """A power of the current model's output (frozen when the part is tried),
+    added on the output side."""
+
+    slot = "additive"
+    order = 40
+    power = 2
+
+    def __init__(self):
+        self.driver = None
+
+    def attach(self, model):
+        self.driver = model
+        self._center = self._scale = None
+
+    def columns(self, values, ctx):
+        h = self._driver_output(ctx)
+        if self._center is None:        # fixed on the fitted record
+            self._center = 0.5 * (float(h.max()) + float(h.min()))
+            self._scale = 0.5 * float(np.ptp(h)) or 1.0
+        z = (h - self._center) / self._scale
+        return (z ** self.power)[:, None], np.array([-np.inf]), np.array([np.inf]), [self.kind]
+
+
+@register
+class OutputQuadratic(_OutputBend):
+    """Asymmetry on the output side: ``y = H + a H^2`` (H the model's output,
+    scaled to +-1 over the record).
+
+    Examples
+    --------
+    >>> OutputQuadratic().power, OutputQuadratic().effect
+    (2, 'asymmetry')
+    """
+
+    effect = "asymmetry"
+    kind = "output_quadratic"
+    power = 2
+    description = "quadratic output map y = H + a H^2"
+
+
+@register
+class OutputCubic(_OutputBend):
+    """Saturation on the output side: ``y = H + c H^3`` (c < 0: the gain falls
+    at the extremes; H the model's output scaled to +-1 over the record).
+
+    Examples
+    --------
+    >>> OutputCubic().power, OutputCubic().effect
+    (3, 'saturation')
+    """
+
+    effect = "saturation"
+    kind = "output_cubic"
+    power = 3
+    description = "cubic output map y = H + c H^3"
+
+
+@register
+class Drift(Part):
+    """Offset drift ``a t/T + b (1 - exp(-t/tau))`` (free a, b; tau [s]).
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), 1.0, 0.0, 1.0, 3.0)
+    >>> Drift().columns({"time_constant": 1.0}, ctx)[0].round(4).tolist()
+    [[0.0, 0.0], [0.3333, 0.6321], [0.6667, 0.8647]]
+    """
+
+    effect = "drift"
+    kind = "offset_drift"
+    slot = "additive"
+    order = 20
+    needs_time = True
+    description = "offset drift a t + b (1 - exp(-t/tau))"
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("time_constant", 0.3 * ctx.duration, 0.02 * ctx.duration, 3 * ctx.duration, True)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"time_constant": f * ctx.duration} for f in (0.05, 0.2, 0.8)]
+
+    def columns(self, values, ctx):
+        t = ctx.time
+        D = np.column_stack([t / ctx.duration, -np.expm1(-t / values["time_constant"])])
+        return D, np.full(2, -np.inf), np.full(2, np.inf), ["drift_linear", "drift_exponential"]
+
+
+@register
+class SensorDrift(Part):
+    """Offset drift added after a saturating output map (a displacement
+    sensor or a fixture warming up, outside the actuator):
+    ``y = map(u) + a t/T + b (1 - exp(-t/tau))``.  Tried only when the model
+    has an output map (without one it is :class:`Drift`); its amplitudes are
+    nonlinear parameters (in output spans) because the map is.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), 1.0, 0.0, 1.0, 3.0)
+    >>> part = SensorDrift(); part.y_span = 2.0
+    >>> part.after_output({"linear": 0.5, "exponential": 0.0, "time_constant": 1.0}, ctx).tolist()
+    [0.0, 0.3333333333333333, 0.6666666666666666]
+    """
+
+    effect = "drift"
+    kind = "sensor_drift"
+    slot = "after_output"
+    needs_time = True
+    needs_output_map = True
+    description = "offset drift after the output map a t + b (1 - exp(-t/tau))"
+
+    def __init__(self):
+        self.y_span = 1.0
+        self.driver = None
+
+    def prepare(self, y, ctx):
+        self.y_span = float(np.ptp(y)) or 1.0
+        self._y = np.asarray(y, dtype=np.float64)
+
+    def attach(self, model):
+        self.driver = model
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("linear", 0.0, -0.5, 0.5, False), Parameter("exponential", 0.0, -0.5, 0.5, False),
+                Parameter("time_constant", 0.3 * ctx.duration, 0.02 * ctx.duration, 3 * ctx.duration, True)]
+
+    def initial_values(self, ctx, kinds):
+        # amplitudes from a least-squares fit of the current residual's trend
+        out = []
+        e = None
+        if self.driver is not None and getattr(self, "_y", None) is not None and self._y.size == ctx.n:
+            e = self._y - self.driver.simulate(ctx.v)
+        for f in (0.05, 0.2, 0.8):
+            tau = f * ctx.duration
+            a = b = 0.0
+            if e is not None:
+                t = ctx.time
+                D = np.column_stack([t / ctx.duration, -np.expm1(-t / tau), np.ones(ctx.n)])
+                coef = np.linalg.lstsq(D, e, rcond=None)[0]
+                a, b = (float(np.clip(c / self.y_span, -0.5, 0.5)) for c in coef[:2])
+            out.append({"linear": a, "exponential": b, "time_constant": tau})
+        return out
+
+    def after_output(self, values, ctx):
+        t = ctx.time
+        return self.y_span * (values["linear"] * t / ctx.duration
+                              - values["exponential"] * np.expm1(-t / values["time_constant"]))

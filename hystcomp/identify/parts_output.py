@@ -1,0 +1,154 @@
+"""Model parts of the output side (:mod:`hystcomp.identify.parts`): clipping
+and smooth saturation of the output.
+"""
+
+import numpy as np
+
+from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
+
+__all__ = ["OutputClip", "OutputTanh"]
+
+
+# ----------------------------------------------------------------------------
+# output side
+# ----------------------------------------------------------------------------
+@register
+class OutputClip(Part):
+    """Clipping on the output side (a sensor or amplifier range):
+    ``y = clip(u, low, high)``.  The linear solve uses only the samples
+    more than two noise widths inside the limits (a clipped sample says only
+    that the unclipped output was beyond the limit).  Parameters: the limits
+    as fractions of the output span inside its extremes.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> part = OutputClip()
+    >>> part.set_output_range(0.0, 1.0)
+    >>> part.output(np.array([-1.0, 0.5, 2.0]), {"low": 0.0, "high": 0.0}, ctx).tolist()
+    [0.0, 0.5, 1.0]
+    """
+
+    effect = "output_saturation"
+    kind = "output_clip"
+    slot = "output"
+    description = "clipping of the output"
+
+    def __init__(self):
+        self.y_min, self.y_max = 0.0, 1.0
+
+    def set_output_range(self, y_min, y_max):
+        """The measured output's extremes (the limits are placed from them).
+
+        Parameters
+        ----------
+        y_min, y_max : float
+            Smallest and largest measured output.
+        """
+        self.y_min, self.y_max = float(y_min), float(y_max)
+
+    def prepare(self, y, ctx):
+        self.set_output_range(float(np.min(y)), float(np.max(y)))
+
+    def limits(self, values):
+        """(low, high) in output units."""
+        span = self.y_max - self.y_min
+        return self.y_min + values["low"] * span, self.y_max - values["high"] * span
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("low", 0.0, -0.2, 0.2, False), Parameter("high", 0.0, -0.2, 0.2, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"low": a, "high": b} for a in (-0.1, 0.0) for b in (-0.1, 0.0)]
+
+    def fit_rows(self, y, values, ctx):
+        lo, hi = self.limits(values)
+        m = 2.0 * ctx.noise
+        return (y > lo + m) & (y < hi - m)
+
+    def output(self, u, values, ctx):
+        lo, hi = self.limits(values)
+        return np.clip(u, lo, hi)
+
+    def describe(self, values):
+        lo, hi = self.limits(values)
+        return {"part": self.description, "low": float(f"{lo:.6g}"), "high": float(f"{hi:.6g}")}
+
+
+@register
+class OutputTanh(Part):
+    """Smooth saturation on the output side (a magnetisation-like output,
+    an amplifier running into its rails):
+    ``y = c + S tanh((u - c)/S)`` for the linear prediction u.  The linear
+    solve fits ``u`` to ``c + S atanh((y - c)/S)`` on the samples inside
+    98 % of the limits, weighted by ``(1 - ((y - c)/S)^2)^2`` (the slope of
+    the map squared, so that the weighted residual is the output's residual
+    to first order).  Parameters: the half-range ``S`` relative to the
+    output's half-span (> 1) and the centre ``c`` relative to the output's
+    mid-range, in half-spans.
+
+    Examples
+    --------
+    >>> part = OutputTanh()
+    >>> part.set_output_range(-1.0, 1.0)
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> part.output(np.array([0.0, 10.0]), {"limit": 1.5, "centre": 0.0}, ctx).round(4).tolist()
+    [0.0, 1.5]
+    """
+
+    effect = "saturation"
+    kind = "output_tanh"
+    slot = "output"
+    description = "saturating output map y = c + S tanh((u - c)/S)"
+
+    def __init__(self):
+        self.y_min, self.y_max = -1.0, 1.0
+
+    def prepare(self, y, ctx):
+        self.set_output_range(float(np.min(y)), float(np.max(y)))
+
+    def set_output_range(self, y_min, y_max):
+        """The measured output's extremes.
+
+        Parameters
+        ----------
+        y_min, y_max : float
+            Smallest and largest measured output.
+        """
+        self.y_min, self.y_max = float(y_min), float(y_max)
+
+    def _map(self, values):
+        half = 0.5 * (self.y_max - self.y_min) or 1.0
+        c = 0.5 * (self.y_max + self.y_min) + values["centre"] * half
+        S = values["limit"] * half
+        return c, S
+
+    def parameters(self, ctx, kinds):
+        # the limit may sit just inside the measured half-span: the measured
+        # extremes carry the noise's extremes (about 3 noise floors)
+        return [Parameter("limit", 1.5, 0.97, 20.0, True), Parameter("centre", 0.0, -0.3, 0.3, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"limit": L, "centre": 0.0} for L in (1.0, 1.05, 1.15, 1.4, 2.0, 4.0)]
+
+    def fit_rows(self, y, values, ctx):
+        c, S = self._map(values)
+        return np.abs(y - c) < 0.98 * S
+
+    def target(self, y, values, ctx):
+        c, S = self._map(values)
+        r = np.clip((y - c) / S, -0.98, 0.98)
+        return c + S * np.arctanh(r), (1.0 - r ** 2) ** 2
+
+    def output(self, u, values, ctx):
+        c, S = self._map(values)
+        return c + S * np.tanh((u - c) / S)
+
+    def output_slope(self, u, values, ctx):
+        """d output / d u (for the Gauss-Newton refinement of the weights)."""
+        c, S = self._map(values)
+        return 1.0 - np.tanh((u - c) / S) ** 2
+
+    def describe(self, values):
+        c, S = self._map(values)
+        return {"part": self.description, "centre": float(f"{c:.6g}"), "limit": float(f"{S:.6g}")}
