@@ -52,7 +52,7 @@ def main(argv=None):
     k_step = int(np.argmax(np.abs(v) > 1.0))
     print(f"\nbase residual: mean {e[:k_step].mean():+.3f} um during the 0 V hold "
           f"(t < {t[k_step]:.4g} s), {e[k_step + 5:].mean():+.3f} um after the step")
-    for p in rep.save_plots(args.out):
+    for p in rep.save_plots(args.out, input_unit="V", output_unit="um"):
         print(f"wrote {p}")
     return 0
 

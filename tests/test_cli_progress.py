@@ -79,3 +79,22 @@ def test_redirected_subprocess_has_no_carriage_returns(tmp_path):
     # exit 1: a 10 ms record is too short for every check of the demo to pass
     assert proc.returncode in (0, 1) and "checks" in proc.stdout, proc.stderr
     assert "\r" not in proc.stderr and "\r" not in proc.stdout
+
+
+def test_diagnose_progress_on_a_terminal_only(monkeypatch):
+    """diagnose(progress=True): a tqdm bar counting the candidate fits, with the search's
+    steps written above it, on a terminal; nothing at all on a redirected stream."""
+    from hystcomp.datasets import hidden_effect_data
+    from hystcomp.diagnose import diagnose
+
+    d = hidden_effect_data("drift", seed=1)
+    tty = _Terminal()
+    monkeypatch.setattr(sys, "stderr", tty)
+    rep = diagnose(d.t, d.v, d.y, effects=["drift", "creep"])
+    out = tty.getvalue()
+    assert rep.effects == ["drift"]
+    assert "diagnose: added drift" in out and "2fit" in out and "\r" in out
+    pipe = io.StringIO()
+    monkeypatch.setattr(sys, "stderr", pipe)
+    assert diagnose(d.t, d.v, d.y, effects=["drift", "creep"]).effects == ["drift"]
+    assert pipe.getvalue() == ""

@@ -38,7 +38,7 @@ def drift_csv(tmp_path_factory):
 
 def test_json_schema(drift_csv, capsys, tmp_path):
     status, out, err = _run([drift_csv, "--time", "time", "--input", "volts", "--output", "um", "--json",
-                             "--plots", str(tmp_path / "figs")], capsys)
+                             "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
     assert js["schema_version"] == 2
@@ -55,7 +55,21 @@ def test_json_schema(drift_csv, capsys, tmp_path):
     assert sig["present"] and sig["statistic"] > sig["threshold"]
     assert sorted(p.name for p in (tmp_path / "figs").glob("*.png")) == [
         "diagnose_gap.png", "diagnose_loops.png", "diagnose_signatures.png"]
-    assert "diagnose:" in err          # progress lines go to stderr
+    # progress (tqdm) shows on a terminal only: redirected, stderr has only the files written
+    assert "diagnose:" not in err and "\r" not in err and "wrote" in err
+
+
+def test_units_on_the_axes(drift_csv, capsys):
+    from hystcomp.diagnose import diagnose
+
+    d = hidden_effect_data("drift", seed=2, dt=0.0125)
+    figs = diagnose(d.t, d.v, d.y, effects=["drift"], progress=False).plots(input_unit="V", output_unit="um")
+    labels = [a.get_xlabel() + " | " + a.get_ylabel() for f in figs.values() for a in f.axes]
+    assert any("input v [V]" in lab and "residual [um]" in lab for lab in labels)
+    assert any("dv/dt [V/s]" in lab for lab in labels) and any("output y [um]" in lab for lab in labels)
+    assert not any("units]" in lab for lab in labels)
+    status, out, err = _run([drift_csv, "--units", "V", "--quiet"], capsys)
+    assert status == 2 and "--units" in err and "Traceback" not in err
 
 
 def test_summary_text_and_none(tmp_path, capsys):

@@ -128,6 +128,8 @@ def add_arguments(parser):
     parser.add_argument("--output", default="y", help="measured output column (default y)")
     parser.add_argument("--json", action="store_true", help="print one JSON object to stdout")
     parser.add_argument("--plots", metavar="DIR", help="write the diagnosis figures (PNG) into DIR")
+    parser.add_argument("--units", metavar="IN,OUT", default="input units,output units",
+                        help="units of the input and output columns for the figures' axes, e.g. V,um")
     parser.add_argument("--validation", type=float, default=0.3, help="held-out fraction (default 0.3)")
     parser.add_argument("--max-effects", type=int, default=4, help="at most this many effects (default 4)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
@@ -160,6 +162,10 @@ def run(args):
     files = list(args.data) if isinstance(args.data, (list, tuple)) else [args.data]
     if int(getattr(args, "jobs", 1)) < 1:
         return _fail(f"error: --jobs is {args.jobs} but should be >= 1")
+    units = str(getattr(args, "units", "input units,output units")).split(",")
+    if len(units) != 2 or not all(u.strip() for u in units):
+        return _fail(f"error: --units is {args.units!r} but should be two units separated by a comma, e.g. V,um")
+    units = [u.strip() for u in units]
     records = []
     for path in files:
         try:
@@ -199,7 +205,7 @@ def run(args):
             for path, rep in zip(files, reps):
                 folder = args.plots if len(files) == 1 else os.path.join(
                     args.plots, os.path.splitext(os.path.basename(path))[0])
-                for p in rep.save_plots(folder):
+                for p in rep.save_plots(folder, *units):
                     print(f"wrote {p}", file=sys.stderr)
     except Exception as exc:
         return _fail(f"error: cannot write the figures to {args.plots} ({type(exc).__name__}: {exc})")

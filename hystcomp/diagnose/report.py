@@ -147,12 +147,18 @@ class Diagnosis:
                 f"rms_before={self.rms_before:.4g}, rms_after={self.rms_after:.4g})")
 
     # -- figures
-    def plots(self):
+    def plots(self, input_unit="input units", output_unit="output units"):
         """Figures: ``signatures`` (the base residual in time, against the
         input and against the rate, the noise floor drawn), ``loops``
         (held-out loops of the base and final model, every n-th cycle on long
         records), ``gap`` (the residual before and after each step with the
         noise floor).
+
+        Parameters
+        ----------
+        input_unit, output_unit : str
+            Units of the input and output written on the axes (e.g. ``"V"``,
+            ``"um"``); the record itself carries none.
 
         Returns
         -------
@@ -160,6 +166,10 @@ class Diagnosis:
         """
         from ..plotting import new_figure
 
+        for name, unit in (("input_unit", input_unit), ("output_unit", output_unit)):
+            if not isinstance(unit, str):
+                raise TypeError(f"Parameter {name} is {unit!r} but should be a string such as 'V'")
+        iu, ou = input_unit, output_unit
         rec = self._rec
         s = self.noise_floor
         xax = rec.t if rec.t is not None else np.arange(rec.n)
@@ -174,22 +184,22 @@ class Diagnosis:
         for k, j, _ in rec.holds:
             ax[0].axvspan(xax[k], xax[j - 1], color="0.85", zorder=0)
         ax[0].axvline(xax[rec.k_val], color="k", ls="--", lw=0.8)
-        ax[0].set(xlabel=xlabel + " (grey: holds, dashed: held out from)", ylabel="residual [output units]",
+        ax[0].set(xlabel=xlabel + " (grey: holds, dashed: held out from)", ylabel=f"residual [{ou}]",
                   title="in time (drift, creep, initial state)")
         ax[0].legend(fontsize=7, loc="best", framealpha=0.6)
         up = rec.direction[idx] >= 0
         ax[1].plot(rec.v[idx][up], e0[idx][up], ".", ms=1.5, label="rising")
         ax[1].plot(rec.v[idx][~up], e0[idx][~up], ".", ms=1.5, label="falling")
-        ax[1].set(xlabel="input v [input units]", ylabel="residual [output units]",
+        ax[1].set(xlabel=f"input v [{iu}]", ylabel=f"residual [{ou}]",
                   title="against input (asymmetry, saturation)")
         ax[1].legend(fontsize=7, loc="best", framealpha=0.6)
         if rec.dt is not None:
             ax[2].plot(rec.rate[idx], e0[idx], ".", ms=1.5)
-            ax[2].set(xlabel="input rate dv/dt [input units/s]", ylabel="residual [output units]",
+            ax[2].set(xlabel=f"input rate dv/dt [{iu}/s]", ylabel=f"residual [{ou}]",
                       title="against rate (rate dependence, delay)")
         else:
             ax[2].text(0.5, 0.5, "no time axis: rate untested", ha="center", transform=ax[2].transAxes)
-            ax[2].set(xlabel="-", ylabel="residual [output units]", title="against rate")
+            ax[2].set(xlabel="-", ylabel=f"residual [{ou}]", title="against rate")
         ax[3].axis("off")
         txt = "\n".join(f"{k}: {v['statistic']:.2f} (threshold {v['threshold']:.2f})"
                         + ("  PRESENT" if v["present"] else "") + ("" if v["testable"] else "  untested")
@@ -214,7 +224,7 @@ class Diagnosis:
             a.plot(rec.v[sel], rec.y[sel], ".", color="0.5", ms=1.5, label="measured")
             a.plot(rec.v[sel], pred[sel], ".", ms=1.5, label=name)
             rms = float(np.sqrt(np.mean((rec.y - pred)[val] ** 2)))
-            a.set(xlabel="input v [input units]", ylabel="output y [output units]",
+            a.set(xlabel=f"input v [{iu}]", ylabel=f"output y [{ou}]",
                   title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
             a.legend(fontsize=8, loc="upper left", markerscale=4)
         fig.suptitle("Loops on the held-out part: " + " + ".join(["PI"] + list(self.effects)))
@@ -238,14 +248,14 @@ class Diagnosis:
             a.axhline(-1.5 * s, color="C2", ls=":", lw=0.8)
             a.axvline(xax[rec.k_val], color="k", ls="--", lw=0.8)
             a.set_ylim(-ylim, ylim)
-            a.set_ylabel("residual")
+            a.set_ylabel(f"residual [{ou}]")
             a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
         ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed: held out from)")
         fig.suptitle(textwrap.fill(f"verdict: {self.verdict}; stopped: {self.stopped}", 110), fontsize=9)
         out["gap"] = fig
         return out
 
-    def save_plots(self, folder):
+    def save_plots(self, folder, input_unit="input units", output_unit="output units"):
         """Write the figures of :meth:`plots` as PNG files; returns their paths.
 
         Parameters
@@ -253,6 +263,8 @@ class Diagnosis:
         folder : str or path-like
             Directory for ``diagnose_signatures.png``, ``diagnose_loops.png``
             and ``diagnose_gap.png`` (created if missing).
+        input_unit, output_unit : str
+            Units written on the axes (see :meth:`plots`).
 
         Returns
         -------
@@ -263,7 +275,7 @@ class Diagnosis:
 
         os.makedirs(folder, exist_ok=True)
         paths = []
-        for name, fig in self.plots().items():
+        for name, fig in self.plots(input_unit, output_unit).items():
             p = os.path.join(folder, f"diagnose_{name}.png")
             fig.savefig(p, dpi=90)
             plt.close(fig)

@@ -49,9 +49,33 @@ def _rms(a):
 
 def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress):
     """The search behind :func:`hystcomp.diagnose.diagnose`; returns the
-    keyword arguments of a :class:`~hystcomp.diagnose.report.Diagnosis`."""
+    keyword arguments of a :class:`~hystcomp.diagnose.report.Diagnosis`.
+
+    With `progress`, a tqdm bar on stderr counts the candidate fits and the
+    search's steps are written above it, on a terminal only (redirected
+    output stays silent, as every progress display of the package)."""
+    from .._progress import progress_bar
+
+    bar = progress_bar(desc="diagnose", enabled=progress, unit="fit")
+    try:
+        if bar.disable:
+            return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
+                           lambda s: None, lambda desc: None)
+
+        def say(s):
+            bar.write("diagnose: " + s, file=sys.stderr)
+
+        def tick(desc):
+            bar.set_description_str(desc, refresh=False)
+            bar.update(1)
+
+        return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick)
+    finally:
+        bar.close()
+
+
+def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick):
     t0 = time.perf_counter()
-    say = (lambda s: print("diagnose: " + s, file=sys.stderr, flush=True)) if progress else (lambda s: None)
     rec = Record(t, v, y, validation)
     ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
     if thresholds is not None:
@@ -116,7 +140,9 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 pt = vp.optimise(st, start, free=free, max_evaluations=12 * k_new, starts=starts)
             except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
                 say(f"step {len(chosen) + 1}: {part.kind}: failed ({exc})")
+                tick(f"diagnose step {len(chosen) + 1}")
                 continue
+            tick(f"diagnose step {len(chosen) + 1}")
             trials[part.kind] = (part, st, pt, rms_val(pt))
             say(f"step {len(chosen) + 1}: {part.effect:17s} {part.kind:22s} held-out RMS {trials[part.kind][3]:.4g}"
                 f"  [{time.perf_counter() - t0:.1f} s]")
