@@ -36,6 +36,9 @@ extensions = [
 ]
 
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
+# no "smart" typography: "--out" in an example's or docstring's command line must stay two
+# hyphens (an en dash would break the command a reader copies)
+smartquotes = False
 exclude_patterns = ["_build"]
 templates_path = ["_templates"]
 myst_heading_anchors = 3
