@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from realistic import ALL, HOLDOUT, TUNING, family
+from realistic import ALL, HOLDOUT, HOLDOUT2, TUNING, family
 from realistic import excitations as ex
 from realistic import mechanisms as me
 
@@ -114,12 +114,36 @@ def test_sets_are_disjoint_and_large_enough():
     assert family({"gain_drift", "drift", "output_saturation"}) == {"drift", "saturation"}
 
 
-@pytest.mark.parametrize("name", sorted(ALL))
+@pytest.mark.parametrize("name", sorted(ALL) + sorted(HOLDOUT2))
 def test_every_case_builds_a_finite_record(name):
-    r = ALL[name](0)
+    cases = {**ALL, **HOLDOUT2}
+    r = cases[name](0)
     assert np.isfinite(r.v).all() and np.isfinite(r.y).all() and len(r.v) == len(r.y) >= 5000
     assert r.t is None or (len(r.t) == len(r.v) and np.all(np.diff(r.t) > 0))
     assert r.expect_verdict in ("explained", "unexplained", "either")
     assert r.noise_std > 0
     # seeds differ in more than the noise for cases that draw magnitudes
-    assert not np.array_equal(r.y, ALL[name](1).y)
+    assert not np.array_equal(r.y, cases[name](1).y)
+
+
+def test_holdout2_is_apart_and_new():
+    # the fresh set is not in ALL (the acceptance test does not see it) and names no case twice
+    assert not set(HOLDOUT2) & set(ALL) and len(HOLDOUT2) >= 10
+    assert {r for n in HOLDOUT2 for r in HOLDOUT2[n](0).expect_effects} >= {
+        "creep", "drift", "saturation", "rate_dependence", "initial_state", "asymmetry", "delay"}
+
+
+def test_holdout2_mechanisms_follow_their_laws():
+    from realistic import cases_holdout2 as h2
+
+    dt = 1e-3
+    u = np.concatenate([np.zeros(10), np.full(3000, 2.0)])
+    c = h2.power_law_creep(u, dt, 0.05, 0.1, t0=0.01)
+    t = 2.0        # 2000 samples after the step
+    assert c[10 + 2000] == pytest.approx(2.0 * 0.05 * ((t + 0.01) ** 0.1 - 0.01 ** 0.1), rel=1e-12)
+    assert np.all(c[:11] == 0)
+    # a relay keeps its state between its switching levels
+    r = h2.relay([0.0, 20.0, 0.0, -20.0, 0.0], -15.0, 15.0)
+    assert r.tolist() == [-1.0, 1.0, 1.0, -1.0, -1.0]
+    d = h2.random_walk_drift(5000, dt, 0.3, np.random.default_rng(0))
+    assert d[0] == 0 and np.ptp(d) == pytest.approx(0.3)
