@@ -40,7 +40,7 @@ def test_compensator_of_the_diagnosed_model_beats_the_plain_pi_fit_3x(seed):
     assert np.max(np.abs(rep.model.simulate(v_diag) - r)) < 1e-6 * np.ptp(d.y)
     e_diag = np.sqrt(np.mean((_true_response(seed, v_diag, A) - r) ** 2))
     e_plain = np.sqrt(np.mean((_true_response(seed, v_plain, A) - r) ** 2))
-    # measured 11.9x (seed 0) and 3.4x (seed 1); the issue asks at least 3x
+    # measured 13.3x (seed 0) and 3.6x (seed 1); the issue asks at least 3x
     assert e_plain >= 3.0 * e_diag, (e_plain, e_diag)
 
 
