@@ -42,7 +42,7 @@ import numpy as np
 from numba import njit
 
 from ._kernels import play_step
-from ._validation import as_scalar, as_signal, as_state, as_thresholds, as_weights
+from ._validation import as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_vector, as_weights
 from .models import SCHEMA_VERSION, Invertibility, _MODELS, model_from_dict
 
 __all__ = ["LinearStage", "RateDependentPI", "CreepOperator", "DriftTerm", "Series", "Parallel",
@@ -132,9 +132,7 @@ def lag_bank(v, time_constants, dt, state=None):
     [0.6321, 0.8647, 0.9502]
     """
     u = as_signal(v, "v")
-    tau = np.atleast_1d(np.asarray(time_constants, dtype=np.float64))
-    if tau.size == 0 or np.any(~np.isfinite(tau)) or np.any(tau <= 0):
-        raise ValueError(f"Parameter time_constants is {tau.tolist()} but should hold positive finite times")
+    tau = as_vector(time_constants, "time_constants", positive=True)
     dt = as_scalar(dt, "dt", positive=True)
     x = np.zeros(tau.size) if state is None else as_state(state, tau.size, "state")
     out = np.empty((u.size, tau.size))
@@ -181,12 +179,12 @@ class LinearStage:
     _type = "LinearStage"
 
     def __init__(self, A, B, C, D, dt, kind="custom", parameters=None):
-        A = np.atleast_2d(np.asarray(A, dtype=np.float64))
+        A = np.atleast_2d(as_float_array(A, "A"))
         ns = A.shape[0]
-        if A.shape != (ns, ns):
-            raise ValueError(f"Parameter A has shape {A.shape} but should be ({ns}, {ns})")
-        B = np.asarray(B, dtype=np.float64).reshape(-1)
-        C = np.asarray(C, dtype=np.float64).reshape(-1)
+        if A.ndim != 2 or A.shape != (ns, ns) or ns == 0:
+            raise ValueError(f"Parameter A has shape {A.shape} but should be square, (ns, ns) with ns >= 1")
+        B = as_float_array(B, "B").reshape(-1)
+        C = as_float_array(C, "C").reshape(-1)
         for name, arr in (("B", B), ("C", C)):
             if arr.size != ns:
                 raise ValueError(f"Parameter {name} has {arr.size} entries but should have {ns} "
@@ -198,7 +196,12 @@ class LinearStage:
         self.D = as_scalar(D, "D")
         self.dt = as_scalar(dt, "dt", positive=True)
         self.n_states = ns
+        if not isinstance(kind, str):
+            raise TypeError(f"Parameter kind is {kind!r} but should be a string (a label)")
         self.kind = kind
+        if parameters is not None and not isinstance(parameters, dict):
+            raise TypeError(f"Parameter parameters is {parameters!r} but should be a dict of the "
+                            "factory's physical parameters, or None")
         self.parameters = dict(parameters or {})
 
     @classmethod
@@ -641,10 +644,7 @@ class CreepOperator:
     _type = "CreepOperator"
 
     def __init__(self, time_constants, coefficients, dt):
-        tau = np.atleast_1d(np.asarray(time_constants, dtype=np.float64))
-        if tau.size == 0 or np.any(~np.isfinite(tau)) or np.any(tau <= 0):
-            raise ValueError(f"Parameter time_constants is {tau.tolist()} but should hold positive "
-                             "finite times")
+        tau = as_vector(time_constants, "time_constants", positive=True)
         self.time_constants = tau
         self.coefficients = as_weights(coefficients, tau.size, "coefficients")
         self.dt = as_scalar(dt, "dt", positive=True)
@@ -759,9 +759,9 @@ class DriftTerm:
 
     def __init__(self, dt, polynomial=(), amplitudes=(), time_constants=()):
         self.dt = as_scalar(dt, "dt", positive=True)
-        self.polynomial = np.asarray(polynomial, dtype=np.float64).reshape(-1)
-        self.amplitudes = np.asarray(amplitudes, dtype=np.float64).reshape(-1)
-        tau = np.asarray(time_constants, dtype=np.float64).reshape(-1)
+        self.polynomial = as_float_array(polynomial, "polynomial").reshape(-1)
+        self.amplitudes = as_float_array(amplitudes, "amplitudes").reshape(-1)
+        tau = as_float_array(time_constants, "time_constants").reshape(-1)
         if tau.size != self.amplitudes.size:
             raise ValueError(f"Parameter time_constants has {tau.size} entries but amplitudes has "
                              f"{self.amplitudes.size}; expected one time constant per amplitude")
