@@ -102,6 +102,15 @@ def _rate_play_states(v, r, beta, dt, z, prev, out):
             out[k, i] = z[i]
 
 
+def _frozen(x):
+    """A hashable copy of a JSON-like description (dicts, lists, numbers, strings)."""
+    if isinstance(x, dict):
+        return tuple(sorted((k, _frozen(v)) for k, v in x.items()))
+    if isinstance(x, (list, tuple)):
+        return tuple(_frozen(v) for v in x)
+    return x
+
+
 def lag_bank(v, time_constants, dt, state=None):
     """Outputs of first-order lags ``x_j <- a_j x_j + (1 - a_j) v``,
     ``a_j = exp(-dt / tau_j)`` (exact discretisation of ``tau x' = v - x`` for
@@ -454,7 +463,9 @@ class LinearStage:
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()
 
-    __hash__ = None
+    def __hash__(self):
+        # consistent with __eq__ (equal descriptions): equal models hash equal, 0.0 and -0.0 included
+        return hash(_frozen(self.to_dict()))
 
     def __repr__(self):
         if self.kind == "lag":
@@ -604,7 +615,9 @@ class RateDependentPI:
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()
 
-    __hash__ = None
+    def __hash__(self):
+        # consistent with __eq__ (equal descriptions): equal models hash equal, 0.0 and -0.0 included
+        return hash(_frozen(self.to_dict()))
 
     def __repr__(self):
         return (f"RateDependentPI(N={self._r.size}, p0={self.p0!r}, "
@@ -723,7 +736,9 @@ class CreepOperator:
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()
 
-    __hash__ = None
+    def __hash__(self):
+        # consistent with __eq__ (equal descriptions): equal models hash equal, 0.0 and -0.0 included
+        return hash(_frozen(self.to_dict()))
 
     def __repr__(self):
         return f"CreepOperator(m={self.n_states}, dt={self.dt!r})"
@@ -859,7 +874,9 @@ class DriftTerm:
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()
 
-    __hash__ = None
+    def __hash__(self):
+        # consistent with __eq__ (equal descriptions): equal models hash equal, 0.0 and -0.0 included
+        return hash(_frozen(self.to_dict()))
 
     def __repr__(self):
         return (f"DriftTerm(dt={self.dt!r}, polynomial={self.polynomial.tolist()}, "
@@ -895,7 +912,9 @@ class _Composite:
     def __eq__(self, other):
         return type(other) is type(self) and self.to_dict() == other.to_dict()
 
-    __hash__ = None
+    def __hash__(self):
+        # consistent with __eq__ (equal descriptions): equal models hash equal, 0.0 and -0.0 included
+        return hash(_frozen(self.to_dict()))
 
 
 class Series(_Composite):

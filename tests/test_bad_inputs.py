@@ -477,13 +477,19 @@ NOT_COVERED.update({
     "add_arguments": "CLI plumbing: tests/test_cli_errors.py drives it with bad options",
     "run": "CLI plumbing: tests/test_cli_errors.py drives it with bad options",
     "main": "CLI entry: tests/test_cli_errors.py drives it with bad options and files",
-    "thesis_figures": "tens of seconds per call (every thesis figure); thesis sections covered",
-    "compensation_errors": "tens of seconds per call (every section of chapter 5); section_5 covered",
+    "thesis_figures": "2-3 s per call even at dt = 0.05 (every thesis figure); its dt goes to the covered "
+                      "thesis sections",
+    "compensation_errors": "about 3 s per call even at dt = 0.05 (every chapter-5 section); section_5 covered",
     "ThesisCase": "result object (built by the section functions)",
-    "section_3_4_3": "seconds per call (a fine grid of envelopes); section_4_1 and section_5 cover the checks",
-    "section_3_5": "seconds per call; section_4_1 and section_5 cover the same argument checks",
-    "section_5_2": "calls section_5('5.2', dt) (covered)", "section_5_3": "calls section_5('5.3', dt) (covered)",
-    "section_5_4": "calls section_5('5.4', dt) (covered)",
+})
+_THESIS_DT = _DT + [(0.0, NEVER)]
+CASES.update({
+    "section_3_4_3": (_th.section_3_4_3, dict(envelope_set=1, dt=0.05),
+                      dict(envelope_set=[(0, NEVER), ("1", NEVER), (None, NEVER), (1.5, NEVER)], dt=_THESIS_DT)),
+    "section_3_5": (_th.section_3_5, dict(dt=0.05), dict(dt=_THESIS_DT)),
+    "section_5_2": (_th.section_5_2, dict(dt=0.05), dict(dt=_THESIS_DT)),
+    "section_5_3": (_th.section_5_3, dict(dt=0.05), dict(dt=_THESIS_DT)),
+    "section_5_4": (_th.section_5_4, dict(dt=0.05), dict(dt=_THESIS_DT)),
 })
 
 
