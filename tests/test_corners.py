@@ -369,3 +369,64 @@ def test_envelope_dicts_name_a_missing_key(env):
             defaults = {"c": 0.0, "offset": 0.0, "interval": [-1.0, 1.0]}
             assert key in defaults, key
             assert rebuilt == envelope_from_dict({**d, key: defaults[key]}), key
+
+
+# --------------------------------------------------------------------------
+# chunks and inverses at the corners
+# --------------------------------------------------------------------------
+@settings(max_examples=25, deadline=None)
+@given(k=st.integers(0, len(MODEL_IDS) - 1), data=st.data())
+def test_chunked_run_equals_one_shot_on_corner_inputs(k, data):
+    # inputs on the thresholds (0.5), the grids' centres and edges (+-1/3, +-2/3, 1 for
+    # the 3-cell plane on [-1, 1]), 0, 1e-300 and the domains' ends used above
+    m = _models(0.0)[k]
+    corners = [0.0, TINY, 0.5, 0.4, 0.9, 1.0 / 3.0, 2.0 / 3.0, 1.0, 0.25]
+    v = np.array(data.draw(st.lists(st.sampled_from(corners) | st.floats(0.0, 0.95), min_size=2, max_size=30)))
+    cut = data.draw(st.integers(1, v.size - 1))
+    whole = m.simulate(v)
+    first, state = m.simulate(v[:cut], return_state=True)
+    rest = m.simulate(v[cut:], initial_state=state)
+    # the same arithmetic sample by sample: bit-identical
+    np.testing.assert_array_equal(np.concatenate([first, rest]), whole)
+
+
+@FAST
+@given(r=thresholds_st(), data=st.data())
+def test_pi_exact_inverse_on_its_own_thresholds_and_huge_targets(r, data):
+    n = r.size
+    p = np.array(data.draw(st.lists(st.floats(0.0, 1.0), min_size=n, max_size=n)))
+    m = PI(r, p, data.draw(st.floats(0.2, 2.0)))
+    phi = m.loading_curve(r)          # the inverse's thresholds are phi(r_i) (eq. 52)
+    special = sorted({0.0, TINY, -TINY, HUGE, -HUGE} | {s * k * x for x in phi for k in (1, 2) for s in (1, -1)})
+    u = np.array(data.draw(st.lists(st.sampled_from(special) | st.floats(-10.0, 10.0), min_size=1, max_size=20)))
+    back = m.simulate(m.exact_inverse().simulate(u))
+    # composition of two weighted sums: 1e-12 of the largest target so far, plus
+    # the inverse kernel's absolute bracket tolerance 1e-15 (see the scale test below)
+    assert np.all(np.abs(back - u) <= 1e-12 * np.maximum.accumulate(np.abs(u)) + 1e-15)
+
+
+def _scaled_models(s):
+    return [PI(np.array([0.5, 1.0, 1.5]) * s, [0.3, 0.2, 0.1], 1.0), StopPI(np.array([0.5, 1.0]) * s, [0.3, 0.2], 1.0),
+            MGPI(np.array([0.5, 1.0, 1.5]) * s, [0.3, 0.2, 0.1], 1.0, envelope=Tanh(2 * s, 1 / s))]
+
+
+@pytest.mark.parametrize("k", range(3), ids=["PI", "StopPI", "MGPI"])
+def test_exact_inverse_accuracy_at_unit_scale(k):
+    u = 1.5 * np.sin(np.linspace(0, 12, 200)) * np.exp(-np.linspace(0, 1, 200))
+    m = _scaled_models(1.0)[k]
+    # 1e-13: the documented accuracy of the inverse's Newton steps (inverses.py)
+    assert np.max(np.abs(m.simulate(m.exact_inverse().simulate(u)) - u)) < 1e-13
+
+
+@pytest.mark.xfail(strict=True, reason=(
+    "KNOWN DEFECT (hystcomp/_kernels.py, owned elsewhere this round): the exact inverses stop their "
+    "bracket at an absolute width 1e-15 (1 + |x|), so a model written in small units (thresholds of "
+    "1e-9 .. 1e-12, e.g. metres or coulombs) is inverted to a relative error of 1e-5 .. 1e-2 "
+    "instead of 1e-13; remove this xfail when the tolerance is made relative"))
+@pytest.mark.parametrize("k", range(3), ids=["PI", "StopPI", "MGPI"])
+def test_exact_inverse_is_scale_invariant(k):
+    # the same model and targets in units 1e12 times smaller: the same relative accuracy
+    u = 1.5 * np.sin(np.linspace(0, 12, 200)) * np.exp(-np.linspace(0, 1, 200))
+    s = 1e-12
+    m = _scaled_models(s)[k]
+    assert np.max(np.abs(m.simulate(m.exact_inverse().simulate(u * s)) - u * s)) / s < 1e-13
