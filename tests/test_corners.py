@@ -115,7 +115,8 @@ def _virgin_position(coeffs):
     if lo < 0.0 < hi:
         roots = np.roots(np.asarray(coeffs)[::-1])
         roots = roots[np.isreal(roots)].real
-        return float(roots[(roots >= 0) & (roots <= 10)][0])
+        # "range ends at 0" may leave gamma(10) = +1e-15 after rounding: a root at 10 + 1e-15
+        return float(np.clip(roots[(roots >= -1e-9) & (roots <= 10 + 1e-9)][0], 0.0, 10.0))
     return 10.0 if hi <= 0.0 else 0.0
 
 
