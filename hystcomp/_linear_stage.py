@@ -13,7 +13,7 @@ import math
 import numpy as np
 from numba import njit
 
-from ._validation import as_float_array, as_scalar, as_signal, as_state, as_vector
+from ._validation import as_bounds, as_count, as_float_array, as_scalar, as_signal, as_state, as_vector
 from .models import SCHEMA_VERSION, Invertibility
 
 __all__ = ["LinearStage", "lag_bank"]
@@ -286,8 +286,17 @@ class LinearStage:
         >>> np.round(out[:, 1], 6).tolist(), X.shape
         ([0.048374, 0.138933, 0.220875], (2, 1))
         """
-        U = np.ascontiguousarray(U, dtype=np.float64)
-        X = np.zeros((U.shape[1], self.n_states)) if states is None else np.array(states, dtype=np.float64)
+        U = np.ascontiguousarray(as_float_array(U, "U"))
+        if U.ndim != 2 or not np.all(np.isfinite(U)):
+            raise ValueError(f"Parameter U has shape {U.shape} (or non-finite values) but should be a finite "
+                             "(n, m) array, one input column per signal")
+        if states is None:
+            X = np.zeros((U.shape[1], self.n_states))
+        else:
+            X = np.array(as_float_array(states, "states"), dtype=np.float64)
+            if X.shape != (U.shape[1], self.n_states) or not np.all(np.isfinite(X)):
+                raise ValueError(f"Parameter states has shape {X.shape} (or non-finite values) but should be "
+                                 f"finite of shape ({U.shape[1]}, {self.n_states}): one state per column of U")
         out = np.empty_like(U)
         _ss_columns(self.A, self.B, self.C, self.D, U, X, out)
         return out, X
@@ -354,6 +363,8 @@ class LinearStage:
             return math.inf
         if n is None:
             n = int(min(10 ** 6, max(100, 30.0 / max(1e-12, -math.log(max(rho, 1e-300))))))
+        else:
+            n = as_count(n, "n", 1)
         imp = np.zeros(n)
         imp[0] = 1.0
         return float(np.sum(np.abs(self.simulate(imp)))) * (1.0 + 1e-9)
@@ -377,7 +388,7 @@ class LinearStage:
         >>> round(lo, 6), round(hi, 6)
         (-2.0, 2.0)
         """
-        lo, hi = input_bounds
+        lo, hi = as_bounds(input_bounds, "input_bounds")
         m = max(abs(lo), abs(hi))
         if not np.isfinite(m):
             return (-math.inf, math.inf)

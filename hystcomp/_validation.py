@@ -237,3 +237,22 @@ def as_pair(x, name, increasing=True):
     if increasing and not lo < hi:
         raise ValueError(f"Parameter {name} is {x!r} but should have lo < hi")
     return lo, hi
+
+
+def as_bounds(x, name):
+    """`x` as (lo, hi) with lo <= hi, each a float that may be infinite but not NaN."""
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    try:
+        items = list(x)
+    except TypeError:
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)") from None
+    if len(items) != 2:
+        raise ValueError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    try:
+        lo, hi = float(items[0]), float(items[1])
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of real numbers (lo, hi)") from None
+    if np.isnan(lo) or np.isnan(hi) or lo > hi:
+        raise ValueError(f"Parameter {name} is {x!r} but should be (lo, hi) with lo <= hi, not NaN")
+    return lo, hi

@@ -43,7 +43,7 @@ from numba import njit
 
 from ._kernels import play_step
 from ._linear_stage import LinearStage, _frozen, lag_bank
-from ._validation import as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_vector, as_weights
+from ._validation import as_bounds, as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_vector, as_weights
 from .models import SCHEMA_VERSION, Invertibility, _MODELS, model_from_dict
 
 __all__ = ["LinearStage", "RateDependentPI", "CreepOperator", "DriftTerm", "Series", "Parallel",
@@ -308,7 +308,7 @@ class CreepOperator:
         >>> CreepOperator([0.1, 1.0], [0.01, 0.02], dt=0.01).output_bounds((-2.0, 2.0))
         (-0.06, 0.06)
         """
-        m = max(abs(input_bounds[0]), abs(input_bounds[1]))
+        m = max(abs(x) for x in as_bounds(input_bounds, "input_bounds"))
         g = float(np.sum(np.abs(self.coefficients))) * m if np.isfinite(m) else math.inf
         return (-g, g)
 
@@ -403,7 +403,9 @@ class DriftTerm:
         >>> np.round(d.trend([0.0, 1.0, np.inf]), 6).tolist()
         [0.0, 1.264241, 2.0]
         """
-        t = np.asarray(t, dtype=np.float64)
+        t = as_float_array(t, "t")
+        if np.isnan(t).any():
+            raise ValueError("Parameter t holds NaN; expected times in seconds (inf gives the final value)")
         d = np.zeros_like(t)
         for j, a in enumerate(self.polynomial):
             d = d + a * t ** (j + 1)

@@ -204,6 +204,9 @@ class HysteresisModel:
         >>> bool(np.allclose(Y[:, 0], m.simulate(v), rtol=0, atol=1e-13))
         True
         """
+        as_float_array(weights, "weights")
+        if p0 is not None and not np.all(np.isfinite(as_float_array(p0, "p0"))):
+            raise ValueError(f"Parameter p0 is {p0!r}; expected finite numbers")
         return _batch.simulate_batch(self, v, weights, p0, initial_state, return_state)
 
     def _check_state(self, state, virgin):

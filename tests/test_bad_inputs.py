@@ -493,6 +493,40 @@ CASES.update({
 })
 
 
+# methods of the model parts, envelopes and plane models (beyond constructors and simulate)
+_BOUNDS = [((1.0, -1.0), NEVER), ((0.0, np.nan), NEVER), ("ab", NEVER), (1.0, NEVER), ((1.0,), NEVER),
+           ((-np.inf, np.inf), MAYBE)]
+CASES.update({
+    "LinearStage.output_bounds": (lambda input_bounds: _lag().output_bounds(input_bounds),
+                                  dict(input_bounds=(-1.0, 1.0)), dict(input_bounds=_BOUNDS)),
+    "LinearStage.l1_gain": (lambda n=None: _lag().l1_gain(n), dict(), dict(n=_COUNT[:4] + _COUNT[5:])),
+    "LinearStage.filter_columns": (lambda U, states=None: _lag().filter_columns(U, states), dict(U=np.ones((5, 2))),
+                                   dict(U=_PLANE[:4] + _PLANE[5:6], states=[("ab", NEVER), ([[np.nan], [0.0]], NEVER),
+                                                              ([1.0], NEVER), (np.zeros((3, 1)), NEVER)])),
+    "CreepOperator.output_bounds": (lambda input_bounds: _eff.CreepOperator([0.1], [0.01], 0.01).output_bounds(
+        input_bounds), dict(input_bounds=(-1.0, 1.0)), dict(input_bounds=_BOUNDS)),
+    "DriftTerm.trend": (lambda t: _eff.DriftTerm(0.5, [0.1]).trend(t), dict(t=[0.0, 1.0]),
+                        dict(t=[_SIGNAL[k] for k in (0, 2, 4, 5)])),     # t = inf is the final value
+    "Series.simulate(initial_state)": (lambda initial_state: _eff.Series(_pi(), _lag()).simulate(
+        [0.0, 1.0], initial_state=initial_state), dict(initial_state=None),
+        dict(initial_state=[([np.nan, 0.0, 0.0], NEVER), ("ab", NEVER), ([0.0], NEVER)])),
+    "RateDependentPI.play_positions": (lambda v: _eff.RateDependentPI([0.5], [0.5], 1.0, 0.01, 1e-3).play_positions(v),
+                                       dict(v=_v), dict(v=_SIGNAL)),
+    "PI.simulate_batch": (lambda weights, p0=None: _pi().simulate_batch(_v, weights, p0), dict(weights=[[0.4, 0.2]]),
+                          dict(weights=_PLANE[:3] + _PLANE[4:6], p0=_SCALAR[:5] + _SCALAR[6:7])),
+    "Preisach.level": (lambda v: Preisach((-1.0, 1.0), np.tril(np.ones((3, 3)))).level(v), dict(v=0.0),
+                       dict(v=[(np.nan, NEVER), ("abc", NEVER), (1 + 1j, NEVER), (object(), NEVER),
+                               (np.inf, MAYBE), ([1.0, 2.0], MAYBE)])),
+    "Envelope.__call__": (lambda v: Atanh(1.0, 0.5)(v), dict(v=[0.5]), dict(v=_SIGNAL[:6] + [([3.0], NEVER)])),
+    "Envelope.derivative": (lambda v: Atanh(1.0, 0.5).derivative(v), dict(v=[0.5]),
+                            dict(v=_SIGNAL[:6] + [([3.0], NEVER)])),
+    "Envelope.inverse": (lambda y: Tanh(2.0, 1.0).inverse(y), dict(y=[0.5]),
+                         dict(y=_SIGNAL[:3] + _SIGNAL[4:6] + [([3.0], NEVER)])),
+    "Polynomial.inverse": (lambda y: Polynomial([0.0, 1.0], interval=(0.0, 10.0)).inverse(y), dict(y=[0.5]),
+                           dict(y=_SIGNAL[:3] + _SIGNAL[4:6] + [([11.0], NEVER)])),
+})
+
+
 def _public_callables():
     names = set()
     for modname in MODULES:
