@@ -4,6 +4,8 @@ import numpy as np
 
 import control as ct
 
+from ._validation import as_count
+
 __all__ = ["CircleCriterion", "circle_criterion"]
 
 
@@ -260,7 +262,7 @@ def circle_criterion(loop, bounds, n_frequencies=20000):
         raise ValueError(f"Parameter bounds is {bounds!r} but should be (k1, k2)") from None
     if not (np.isfinite(k1) and np.isfinite(k2) and k1 <= k2):
         raise ValueError(f"Parameter bounds is {bounds!r} but should be finite with k1 <= k2")
-    w = _frequency_grid(loop, int(n_frequencies))
+    w = _frequency_grid(loop, as_count(n_frequencies, "n_frequencies", 10))
     Lw = _response(loop, w)
 
     def refine(k1_, j):

@@ -10,7 +10,7 @@ from concurrent.futures import as_completed
 
 import numpy as np
 
-from ._validation import as_signal, check_choice
+from ._validation import as_count, as_pair, as_signal, check_choice
 
 def loop_width(reference, output, n_bins=100):
     """Width of the output-vs-reference loop.
@@ -43,7 +43,12 @@ def loop_width(reference, output, n_bins=100):
     0.2
     """
     r = as_signal(reference, "reference")
-    e = as_signal(output, "output") - r
+    y = as_signal(output, "output")
+    if y.size != r.size:
+        raise ValueError(f"Parameter output has {y.size} samples but reference has {r.size}; expected "
+                         "one output sample per reference sample")
+    n_bins = as_count(n_bins, "n_bins", 1)
+    e = y - r
     span = r.max() - r.min()
     if span == 0:
         return float(e.max() - e.min())
@@ -311,9 +316,26 @@ def plot_comparison(comparison, title=None, scenarios=None, time_window=None):
     """
     from .plotting import new_figure
 
+    if not isinstance(comparison, Comparison):
+        raise TypeError(f"Parameter comparison is {comparison!r} ({type(comparison).__name__}) but should "
+                        "be a Comparison (the result of compare)")
+    have = [row["scenario"] for row in comparison.rows]
+    if scenarios is None:
+        names = have
+    else:
+        if isinstance(scenarios, str):
+            scenarios = [scenarios]
+        try:
+            names = list(scenarios)
+        except TypeError:
+            raise TypeError(f"Parameter scenarios is {scenarios!r} but should be an iterable of scenario "
+                            "names") from None
+        for name in names:
+            check_choice(name, "scenarios", have)
+    if time_window is not None:
+        time_window = as_pair(time_window, "time_window")
     fig, axes = new_figure(1, 3, size=(15, 4.6))
     t, r = comparison.t, comparison.reference
-    names = [row["scenario"] for row in comparison.rows] if scenarios is None else list(scenarios)
     axes[0].plot(t, r, "k--", lw=1.2, label="reference r")
     for name in names:
         row = comparison.row(name)

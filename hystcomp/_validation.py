@@ -187,3 +187,72 @@ def check_simulates(obj, name):
             "compensator with a simulate(x) method"
         )
     return obj
+
+
+def as_count(x, name, minimum=0):
+    """`x` as an int >= `minimum`; TypeError for non-integers (2.5, NaN,
+    strings, None), ValueError naming `name` below `minimum`.  An integral
+    float (``2048.0``) is accepted."""
+    if isinstance(x, (bool, np.bool_)):
+        raise TypeError(f"Parameter {name} is {x!r} but should be an integer")
+    if isinstance(x, (int, np.integer)):
+        val = int(x)
+    elif isinstance(x, (float, np.floating)) and np.isfinite(x) and float(x).is_integer():
+        val = int(x)
+    else:
+        raise TypeError(f"Parameter {name} is {x!r} but should be an integer")
+    if val < minimum:
+        raise ValueError(f"Parameter {name} is {val} but should be >= {minimum}")
+    return val
+
+
+def as_vector(x, name, min_length=1, positive=False, nonnegative=False, increasing=False):
+    """`x` as a finite 1-D float64 array (a scalar becomes length 1), with
+    optional sign and ordering checks; errors name `name`."""
+    arr = as_signal(x, name, min_length=min_length)
+    if positive and np.any(arr <= 0):
+        k = int(np.argmax(arr <= 0))
+        raise ValueError(f"Parameter {name} holds {arr[k]} at index {k} but should hold values > 0")
+    if nonnegative and np.any(arr < 0):
+        k = int(np.argmax(arr < 0))
+        raise ValueError(f"Parameter {name} holds {arr[k]} at index {k} but should hold values >= 0")
+    if increasing and np.any(np.diff(arr) <= 0):
+        k = int(np.argmax(np.diff(arr) <= 0)) + 1
+        raise ValueError(f"Parameter {name} is not strictly increasing: {name}[{k}] = {arr[k]} "
+                         f"follows {name}[{k - 1}] = {arr[k - 1]}")
+    return arr
+
+
+def as_pair(x, name, increasing=True):
+    """`x` as two finite floats (lo, hi), lo < hi when `increasing`."""
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    try:
+        items = list(x)
+    except TypeError:
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)") from None
+    if len(items) != 2:
+        raise ValueError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    lo, hi = (as_scalar(v, name) for v in items)
+    if increasing and not lo < hi:
+        raise ValueError(f"Parameter {name} is {x!r} but should have lo < hi")
+    return lo, hi
+
+
+def as_bounds(x, name):
+    """`x` as (lo, hi) with lo <= hi, each a float that may be infinite but not NaN."""
+    if isinstance(x, (str, bytes)):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    try:
+        items = list(x)
+    except TypeError:
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)") from None
+    if len(items) != 2:
+        raise ValueError(f"Parameter {name} is {x!r} but should be a pair of numbers (lo, hi)")
+    try:
+        lo, hi = float(items[0]), float(items[1])
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter {name} is {x!r} but should be a pair of real numbers (lo, hi)") from None
+    if np.isnan(lo) or np.isnan(hi) or lo > hi:
+        raise ValueError(f"Parameter {name} is {x!r} but should be (lo, hi) with lo <= hi, not NaN")
+    return lo, hi

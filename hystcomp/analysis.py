@@ -45,13 +45,16 @@ import control as ct
 from ._circle import CircleCriterion, circle_criterion
 from .envelopes import Identity
 from .models import MGPI, StopPI
+from ._validation import as_count, as_float_array, as_scalar, as_vector
 
 __all__ = ["describing_function", "DescribingFunction", "limit_cycles", "Sector", "slope_bounds",
            "CircleCriterion", "circle_criterion"]
 
 
 def _amplitudes(amplitudes):
-    a = np.asarray(amplitudes, dtype=np.float64)
+    a = as_float_array(amplitudes, "amplitudes")
+    if a.ndim > 1:
+        raise ValueError(f"Parameter amplitudes has shape {a.shape} but should be a scalar or a 1-D array")
     if not np.all(np.isfinite(a)) or np.any(a < 0):
         raise ValueError(f"Parameter amplitudes is {amplitudes!r} but should be finite and >= 0")
     return a
@@ -194,6 +197,7 @@ def describing_function(model, amplitudes, samples_per_cycle=2048, cycles=3):
     """
     _check_model(model)
     a = _amplitudes(amplitudes)
+    _numeric_options(samples_per_cycle, cycles)
     if isinstance(model, MGPI) and model.symmetric and isinstance(model.envelope_left, Identity):
         out = np.full(a.shape, complex(model.p0))
         for r, p in zip(model._r, model._p):
@@ -206,13 +210,12 @@ def describing_function(model, amplitudes, samples_per_cycle=2048, cycles=3):
         return out
     if isinstance(model, MGPI) and model.symmetric:
         return _mgpi_df(model, a)
-    n = int(samples_per_cycle)
-    if n < 16:
-        raise ValueError(f"Parameter samples_per_cycle is {samples_per_cycle!r} but should be >= 16")
-    c = int(cycles)
-    if c < 0:
-        raise ValueError(f"Parameter cycles is {cycles!r} but should be >= 0")
+    n, c = _numeric_options(samples_per_cycle, cycles)
     return _numeric_df(model, a, n, c)
+
+
+def _numeric_options(samples_per_cycle, cycles):
+    return as_count(samples_per_cycle, "samples_per_cycle", 16), as_count(cycles, "cycles", 0)
 
 
 class DescribingFunction(ct.DescribingFunctionNonlinearity):
@@ -251,8 +254,7 @@ class DescribingFunction(ct.DescribingFunctionNonlinearity):
         super().__init__()
         _check_model(model)
         self.model = model
-        self.samples_per_cycle = samples_per_cycle
-        self.cycles = cycles
+        self.samples_per_cycle, self.cycles = _numeric_options(samples_per_cycle, cycles)
         self.state = model.default_state()
 
     def reset(self):
@@ -278,6 +280,7 @@ class DescribingFunction(ct.DescribingFunctionNonlinearity):
         -------
         complex
         """
+        A = as_scalar(A, "A", nonnegative=True)
         return complex(describing_function(self.model, np.array([A]), self.samples_per_cycle,
                                            self.cycles)[0])
 
@@ -329,7 +332,8 @@ def limit_cycles(loop, model, amplitudes, omega=None):
     a = _amplitudes(amplitudes).reshape(-1)
     if a.size < 2 or np.any(np.diff(a) <= 0):
         raise ValueError("Parameter amplitudes should hold at least two increasing values")
-    w = _frequency_grid(loop, 4000) if omega is None else np.asarray(omega, dtype=float).reshape(-1)
+    w = _frequency_grid(loop, 4000) if omega is None else as_vector(omega, "omega", min_length=2,
+                                                                     positive=True, increasing=True)
     N = describing_function(model, a)
     Lw = _response(loop, w)
     found = []
@@ -404,8 +408,11 @@ class Sector:
     """
 
     def __init__(self, lower, upper, exact):
-        self.lower = float(lower)
-        self.upper = float(upper)
+        self.lower = as_scalar(lower, "lower")
+        self.upper = as_scalar(upper, "upper")
+        if self.upper < self.lower:
+            raise ValueError(f"Parameters lower = {self.lower} and upper = {self.upper} should satisfy "
+                             "lower <= upper")
         self.exact = bool(exact)
 
     def __iter__(self):
@@ -533,9 +540,7 @@ def slope_bounds(model, input_range, compensator=None, n_samples=2000):
     """
     _check_model(model)
     lo, hi = _range(input_range)
-    n = int(n_samples)
-    if n < 10:
-        raise ValueError(f"Parameter n_samples is {n_samples!r} but should be >= 10")
+    n = as_count(n_samples, "n_samples", 10)
     if compensator is None:
         if isinstance(model, (StopPI,)) or (isinstance(model, MGPI) and model.symmetric):
             a, b = _play_family_slopes(model, lo, hi, n)

@@ -41,7 +41,7 @@ from collections import namedtuple
 import numpy as np
 from scipy.signal import fftconvolve
 
-from ._validation import as_scalar, check_choice
+from ._validation import as_count, as_scalar, as_signal, as_vector, check_choice
 from .effects import LinearStage, RateDependentPI, lag_bank
 from .envelopes import Identity, Linear, Polynomial, Tanh
 from .models import MGPI, PI
@@ -117,11 +117,18 @@ def hidden_effect_data(effect=None, seed=0, dt=4e-3, duration=40.0, noise=0.002,
         effect = None
     if effect is not None:
         check_choice(effect, "effect", EFFECTS)
-    rng = np.random.default_rng(seed)
+    rng = np.random.default_rng(as_count(seed, "seed", 0))
     if experiment is None:
         t, v, _ = identification_experiment(dt=dt, duration=duration, amplitude=amplitude)
     else:
-        t, v = np.asarray(experiment[0], float), np.asarray(experiment[1], float)
+        if isinstance(experiment, (str, bytes)) or not hasattr(experiment, "__len__") or len(experiment) < 2:
+            raise TypeError(f"Parameter experiment is {experiment!r} but should be an Experiment or a pair "
+                            "(t, v) of sample arrays")
+        t = as_vector(experiment[0], "experiment[0] (t)", min_length=2, increasing=True)
+        v = as_signal(experiment[1], "experiment[1] (v)")
+        if v.size != t.size:
+            raise ValueError(f"Parameter experiment has {t.size} times but {v.size} input samples; "
+                             "expected one input sample per time")
         dt = float(np.median(np.diff(t)))
     A = float(np.max(np.abs(v)))
     noise = as_scalar(noise, "noise", nonnegative=True)

@@ -41,6 +41,7 @@ import sys
 import numpy as np
 
 from ._progress import progress_bar
+from ._validation import as_count, as_float_array, as_pair, as_scalar, as_vector
 
 __all__ = ["add_arguments", "run", "main", "demo_actuator", "reference", "stability_table", "crossover_scan"]
 
@@ -83,6 +84,11 @@ def reference(t, freq_hz=1.0, amplitude=5.0):
     >>> round(float(reference(np.array([0.25]))[0]), 6)
     4.878049
     """
+    t = as_float_array(t, "t")
+    if not np.all(np.isfinite(t)):
+        raise ValueError("Parameter t holds NaN or inf; expected finite times in seconds")
+    freq_hz = as_scalar(freq_hz, "freq_hz")
+    amplitude = as_scalar(amplitude, "amplitude")
     return amplitude * np.sin(2 * np.pi * freq_hz * t) / (1.0 + 0.1 * t)
 
 
@@ -130,7 +136,7 @@ def stability_table(kp, ki, kd, dt, gains, plant, controller=None):
 
     c = pid(kp, ki, kd, dt) if controller is None else controller
     rows = []
-    for k in gains:
+    for k in as_vector(gains, "gains"):
         m = loop_margins(c, plant, actuator_gain=float(k))
         rows.append((float(k), m.gain_margin, m.phase_margin_deg, m.phase_crossover_hz, m.crossover_hz))
     return rows
@@ -184,6 +190,25 @@ def crossover_scan(plant, dt, nominal_gain, sectors, crossovers_hz, phase_margin
     from .design import pid_gains
     from .iosys import discretize
 
+    if not isinstance(plant, ct.LTI):
+        raise TypeError(f"Parameter plant is {plant!r} ({type(plant).__name__}); expected a python-control "
+                        "LTI system")
+    dt = as_scalar(dt, "dt", positive=True)
+    nominal_gain = as_scalar(nominal_gain, "nominal_gain")
+    if nominal_gain == 0:
+        raise ValueError("Parameter nominal_gain is 0 but should be nonzero")
+    if not isinstance(sectors, dict):
+        raise TypeError(f"Parameter sectors is {sectors!r} but should be a dict name -> (k1, k2)")
+    for name, sec in sectors.items():
+        k1, k2 = as_pair(sec, f"sectors[{name!r}]", increasing=False)
+        if k1 > k2:
+            raise ValueError(f"Parameter sectors[{name!r}] is {sec!r} but should be (k1, k2) with k1 <= k2")
+    crossovers_hz = as_vector(crossovers_hz, "crossovers_hz", positive=True)
+    phase_margin_deg = as_scalar(phase_margin_deg, "phase_margin_deg", positive=True)
+    if phase_margin_deg >= 180:
+        raise ValueError(f"Parameter phase_margin_deg is {phase_margin_deg} but should be below 180")
+    rolloff_factor = as_scalar(rolloff_factor, "rolloff_factor", positive=True)
+    n_frequencies = as_count(n_frequencies, "n_frequencies", 10)
     pd = discretize(plant, dt)
     out = []
     for fc in crossovers_hz:

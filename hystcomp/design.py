@@ -258,7 +258,7 @@ def pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None,
     integral_ratio : float, optional
         ``wc / wi`` (default 5).
     max_lead_deg : float, optional
-        Largest phase the lead may add (default 70 degrees).
+        Largest phase the lead may add, below 90 degrees (default 70).
 
     Returns
     -------
@@ -338,8 +338,11 @@ def pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None,
     def phase_error(phi):
         return np.angle(pid_response(make(phi)) * f_wc * p_wc / np.exp(1j * target))
 
-    lo, hi = -np.radians(89.5) + np.arctan(1.0 / ratio), np.radians(as_scalar(max_lead_deg, "max_lead_deg",
-                                                                                 positive=True))
+    lead = as_scalar(max_lead_deg, "max_lead_deg", positive=True)
+    if lead >= 90.0:
+        raise ValueError(f"Parameter max_lead_deg is {lead} but should be below 90 (the most phase a "
+                         "PID's derivative can add)")
+    lo, hi = -np.radians(89.5) + np.arctan(1.0 / ratio), np.radians(lead)
     grid = np.linspace(lo, hi, 60)
     errs = np.array([phase_error(x) for x in grid])
     sign_change = np.nonzero((np.sign(errs[:-1]) != np.sign(errs[1:])) & (np.abs(errs[:-1] - errs[1:]) < np.pi))[0]
@@ -348,7 +351,8 @@ def pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None,
         raise ValueError(
             f"Parameters crossover_hz = {fc} and phase_margin_deg = {pm} cannot be met: the nominal plant has "
             f"phase {have:.1f} deg at {fc} Hz, and the PID adds between -89.5 and +{np.degrees(hi):.0f} deg "
-            "(lower the crossover, the phase margin, or raise max_lead_deg)")
+            "(lower the crossover, the phase margin, or raise max_lead_deg)"
+            + (f"; actuator_gain = {k} is negative and turns the plant's phase by 180 deg" if k < 0 else ""))
     j = int(sign_change[0])
     phi = brentq(phase_error, grid[j], grid[j + 1], xtol=1e-12)
     gains = make(phi, 1.0 / abs(pid_response(make(phi)) * f_wc * p_wc))
@@ -417,6 +421,8 @@ def design_pid(plant, crossover_hz, phase_margin_deg, actuator_gain=1.0, dt=None
     unknown = set(options) - {"filter_damping", "integral_ratio", "max_lead_deg"}
     if unknown:
         raise TypeError(f"design_pid got unexpected keyword arguments {sorted(unknown)}")
+    if not isinstance(name, str):
+        raise TypeError(f"Parameter name is {name!r} but should be a string")
     g = pid_gains(plant, crossover_hz, phase_margin_deg, actuator_gain=actuator_gain, dt=dt, filter=filter,
                   resonance_hz=resonance_hz, resonance_damping=resonance_damping, filter_hz=filter_hz,
                   **options)
@@ -487,6 +493,8 @@ def loop_margins(controller, plant, actuator_gain=1.0):
     _siso(controller, "controller")
     _siso(plant, "plant")
     k = as_scalar(actuator_gain, "actuator_gain")
+    if k == 0:
+        raise ValueError("Parameter actuator_gain is 0 but should be nonzero (no loop without the actuator)")
     p = discretize(plant, controller.dt) if controller.isdtime(strict=True) else plant
     loop = ct.series(ct.ss(p), ct.ss(controller)) * k
     with warnings.catch_warnings():
@@ -624,6 +632,8 @@ def design_state_feedback(plant, bandwidth_hz, actuator_gain=1.0, dt=None, integ
     """
     _siso(plant, "plant")
     k = as_scalar(actuator_gain, "actuator_gain")
+    if k == 0:
+        raise ValueError("Parameter actuator_gain is 0 but should be nonzero (the plant is not controllable)")
     wb = 2 * np.pi * as_scalar(bandwidth_hz, "bandwidth_hz", positive=True)
     r = as_scalar(control_weight, "control_weight", positive=True)
     speed = as_scalar(observer_speed, "observer_speed", positive=True)

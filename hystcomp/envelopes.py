@@ -131,7 +131,7 @@ class Envelope:
         >>> Linear(4.0).inverse(2.0)
         0.5
         """
-        x = np.asarray(y, dtype=np.float64)
+        x = as_float_array(y, "y")
         _check_finite(self, x, "y")
         lo, hi = self.range
         bad = (x <= lo) | (x >= hi) if _open_range(self) else (x < lo) | (x > hi)
@@ -139,7 +139,7 @@ class Envelope:
             k = int(np.argmax(bad.reshape(-1)))
             val = x.reshape(-1)[k]
             raise ValueError(
-                f"{self!r}.inverse: value {val} at sample index {k} is outside the "
+                f"{self!r}.inverse: parameter y holds {val} at sample index {k}, outside the "
                 f"envelope's range ({lo}, {hi})"
             )
         return _same_shape(self._inverse(x), y)
@@ -191,7 +191,7 @@ class Envelope:
         return kind, np.ascontiguousarray(prm, dtype=np.float64)
 
     def _check(self, v, name):
-        x = np.asarray(v, dtype=np.float64)
+        x = as_float_array(v, name)
         _check_finite(self, x, name)
         lo, hi = self.domain
         if np.isfinite(lo) or np.isfinite(hi):
@@ -551,14 +551,14 @@ class Polynomial(Envelope):
         >>> round(float(g.inverse(2.0)), 12)                        # range end
         1.0
         """
-        x = np.asarray(y, dtype=np.float64)
+        x = as_float_array(y, "y")
         _check_finite(self, x, "y")
         lo, hi = self.range
         bad = ((x < lo) | (x > hi)).reshape(-1)
         if bad.any():
             k = int(np.argmax(bad))
             raise ValueError(
-                f"{self!r}.inverse: value {x.reshape(-1)[k]} at sample index {k} is outside "
+                f"{self!r}.inverse: parameter y holds {x.reshape(-1)[k]} at sample index {k}, outside "
                 f"the envelope's range [{lo}, {hi}]"
             )
         return _same_shape(self._inverse(x), y)

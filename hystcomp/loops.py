@@ -47,7 +47,7 @@ import numpy as np
 import control as ct
 
 from . import _loop_kernels as _lk
-from ._validation import as_scalar, as_signal, check_choice
+from ._validation import as_float_array, as_scalar, as_signal, check_choice
 from .iosys import (
     CompensatorBlock, SaturatedPID, WiringError, compensator_system, discretize, hysteresis_system,
     initial_state, interconnect, pid,
@@ -349,6 +349,14 @@ def build_loop(scenario, hysteresis, plant, controller=None, compensator=None, d
         raise ValueError(f"Scenario {scenario!r} needs a compensator; pass compensator=compensator_system(model)")
     if not hasattr(hysteresis, "simulate"):
         raise TypeError(f"Parameter hysteresis is {hysteresis!r}; expected an hystcomp hysteresis model")
+    if controller is not None and not isinstance(controller, (SaturatedPID, ct.LTI)):
+        # checked even where the scenario has no controller: a wrong object is a mistake, not an option
+        raise TypeError(f"Parameter controller is {controller!r} ({type(controller).__name__}); expected "
+                        "hystcomp.iosys.pid(...) or a python-control LTI system")
+    if compensator is not None and not (isinstance(compensator, CompensatorBlock)
+                                        or callable(getattr(compensator, "simulate", None))):
+        raise TypeError(f"Parameter compensator is {compensator!r}; expected "
+                        "hystcomp.iosys.compensator_system(...) or a compensator object (simulate)")
     dt = _loop_dt(dt, plant, controller)
     stage = _rename_lti(plant, dt, "w", "y", "plant")
     if np.any(stage.D != 0) and need_ctrl:
@@ -429,7 +437,16 @@ def build_scenarios(hysteresis, plant, controller=None, compensator=None, dt=Non
     >>> list(loops)                            # no controller: no feedback scenarios
     ['open_loop', 'feedforward']
     """
-    names = SCENARIOS if scenarios is None else list(scenarios)
+    if scenarios is None:
+        names = SCENARIOS
+    else:
+        if isinstance(scenarios, str):
+            scenarios = [scenarios]
+        try:
+            names = list(scenarios)
+        except TypeError:
+            raise TypeError(f"Parameter scenarios is {scenarios!r} but should be an iterable of names "
+                            f"from {SCENARIOS}") from None
     out = {}
     for s in names:
         check_choice(s, "scenarios", SCENARIOS)
@@ -515,6 +532,10 @@ def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=No
     if why is not None:
         raise NotImplementedError(f"simulate_loop cannot compile loop {loop.name!r}: {why}; run "
                                   "loop.simulate(timepts, inputs) (python-control) instead")
+    if initial_state is not None:
+        x0 = as_float_array(initial_state, "initial_state")
+        if not np.all(np.isfinite(x0)):
+            raise ValueError(f"Parameter initial_state is {initial_state!r}; expected finite numbers")
     if initial_state is not None or params:
         resp = fast_response(loop.system, t, r, loop.initial_state() if initial_state is None else initial_state,
                              params=params)

@@ -19,7 +19,7 @@ import warnings
 
 import numpy as np
 
-from ._validation import as_scalar, as_signal
+from ._validation import as_count, as_scalar, as_signal, check_simulates
 from .iosys import compensator_system
 from .loops import build_scenarios, compare
 
@@ -56,10 +56,18 @@ def identification_input(input_range, n_samples=20_000, n_cycles=10):
     (True, 0.0)
     """
     lo, hi = _input_range(input_range)
-    n = int(as_scalar(n_samples, "n_samples", positive=True))
+    n = as_count(n_samples, "n_samples", 1)
+    n_cycles = as_count(n_cycles, "n_cycles", 1)
     s = np.arange(n) / n
     mid, half = 0.5 * (lo + hi), 0.5 * (hi - lo)
     return mid + half * (1 - 0.8 * s) * np.sin(2 * np.pi * n_cycles * s)
+
+
+def _iterable(x, name):
+    try:
+        return list(x)
+    except TypeError:
+        raise TypeError(f"Parameter {name} is {x!r} but should be a list") from None
 
 
 def _input_range(input_range):
@@ -123,7 +131,12 @@ class MismatchStudy:
     """
 
     def __init__(self, rows, nominal, noise):
-        self.rows, self.nominal, self.noise = rows, nominal, noise
+        if isinstance(rows, (str, bytes, dict)) or not all(isinstance(row, dict) for row in _iterable(rows, "rows")):
+            raise TypeError(f"Parameter rows is {rows!r} but should be a list of dicts (one per seed)")
+        if not isinstance(nominal, dict):
+            raise TypeError(f"Parameter nominal is {nominal!r} but should be a dict (scenario -> error)")
+        self.rows, self.nominal = list(rows), nominal
+        self.noise = as_scalar(noise, "noise", nonnegative=True)
 
     def errors(self, scenario):
         """RMS tracking errors (% of span) of one scenario over the seeds.
@@ -273,13 +286,17 @@ def mismatch_study(true_model, plant, controller, reference, t, input_range, n_s
 
     from .models import MGPI, PI
 
+    check_simulates(true_model, "true_model")
     lo, hi = _input_range(input_range)
     r = as_signal(reference, "reference")
     t = as_signal(t, "t")
     if t.size != r.size or t.size < 2:
         raise ValueError(f"Parameter t has {t.size} samples but reference has {r.size} (need equal, >= 2)")
     dt = float(t[1] - t[0])
-    n = int(as_scalar(n_seeds, "n_seeds", positive=True))
+    n = as_count(n_seeds, "n_seeds", 1)
+    if fit_options is not None and not isinstance(fit_options, dict):
+        raise TypeError(f"Parameter fit_options is {fit_options!r} but should be a dict of keyword "
+                        "arguments for hystcomp.identify.fit, or None")
     noise = as_scalar(noise, "noise")
     if noise < 0:
         raise ValueError(f"Parameter noise is {noise!r} but should be >= 0 (a fraction of the output span)")

@@ -156,6 +156,8 @@ class HysteresisModel:
         self._check_input_domain(x)
         virgin = self.default_state()
         state = virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
+        if initial_state is not None:
+            self._check_state(state, virgin)
         y = self._simulate(x, state)
         return (y, state) if return_state else y
 
@@ -202,7 +204,14 @@ class HysteresisModel:
         >>> bool(np.allclose(Y[:, 0], m.simulate(v), rtol=0, atol=1e-13))
         True
         """
+        as_float_array(weights, "weights")
+        if p0 is not None and not np.all(np.isfinite(as_float_array(p0, "p0"))):
+            raise ValueError(f"Parameter p0 is {p0!r}; expected finite numbers")
         return _batch.simulate_batch(self, v, weights, p0, initial_state, return_state)
+
+    def _check_state(self, state, virgin):
+        """ValueError naming ``initial_state`` for a state this model cannot hold
+        (none by default; the symmetric mGPI checks its play positions)."""
 
     def _check_input_domain(self, x):
         for env in self._envelopes():
@@ -446,6 +455,14 @@ class MGPI(HysteresisModel):
                 z0 = dhi if hi <= 0.0 else dlo
             return np.full(self._r.size, z0)
         return np.zeros(self._r.size + 1)
+
+    def _check_state(self, state, virgin):
+        # a symmetric model's state holds play positions z_i, evaluated by
+        # gamma: each must lie in gamma's domain (an open end gives an
+        # infinite output), except the virgin state's own infinite ends
+        if self.symmetric:
+            z = state[np.isfinite(state) | (state != virgin)]
+            self.envelope_left.check_domain(z, "initial_state")
 
     def operator_outputs(self, state):
         """Operator outputs w_i for a state (for symmetric models w_i = gamma(z_i)).
@@ -695,8 +712,11 @@ class MGPI(HysteresisModel):
 
     @classmethod
     def _from_dict(cls, d):
-        if "envelope" in d or "envelope_left" not in d:
+        if "envelope_left" not in d and "envelope_right" not in d:
             return cls(d["thresholds"], d["weights"], d["p0"], envelope=envelope_from_dict(d["envelope"]))
+        if "envelope" in d:
+            raise ValueError("Model description of a MGPI model has both 'envelope' and 'envelope_left' / "
+                             "'envelope_right'; expected one envelope or the two sides")
         return cls(d["thresholds"], d["weights"], d["p0"],
                    envelope_left=envelope_from_dict(d["envelope_left"]),
                    envelope_right=envelope_from_dict(d["envelope_right"]))

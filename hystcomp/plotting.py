@@ -20,6 +20,8 @@ import textwrap
 import numpy as np
 from matplotlib.figure import Figure
 
+from ._validation import as_count, as_float_array, as_pair, as_signal
+
 __all__ = [
     "new_figure", "plot_loop", "plot_operators", "plot_compensation",
     "plot_loading_curve", "thesis_figures",
@@ -29,6 +31,24 @@ __all__ = [
 def _wrap(text, width=80):
     """Wrap a (long thesis) caption over several lines, keeping its breaks."""
     return "\n".join(textwrap.fill(line, width) for line in str(text).split("\n"))
+
+
+def _curve(x, name, n=None, other=None):
+    """A 1-D float array to plot (NaN allowed: matplotlib leaves a gap), of
+    length `n` when given (that of `other`)."""
+    a = as_float_array(x, name)
+    if a.ndim == 0:
+        a = a.reshape(1)
+    if a.ndim != 1:
+        raise ValueError(f"Parameter {name} has shape {a.shape} but should be a 1-D array of samples")
+    if n is not None and a.size != n:
+        raise ValueError(f"Parameter {name} has {a.size} samples but {other} has {n}; expected the same length")
+    return a
+
+
+def _axes(ax):
+    if ax is not None and not callable(getattr(ax, "plot", None)):
+        raise TypeError(f"Parameter ax is {ax!r} but should be a matplotlib Axes or None")
 
 
 def new_figure(nrows=1, ncols=1, size=(6.4, 4.8)):
@@ -52,7 +72,11 @@ def new_figure(nrows=1, ncols=1, size=(6.4, 4.8)):
     >>> len(fig.axes)
     2
     """
-    fig = Figure(figsize=size, layout="constrained")
+    nrows, ncols = as_count(nrows, "nrows", 1), as_count(ncols, "ncols", 1)
+    w, h = as_pair(size, "size", increasing=False)
+    if w <= 0 or h <= 0:
+        raise ValueError(f"Parameter size is {size!r} but should be (width, height) in inches, both > 0")
+    fig = Figure(figsize=(w, h), layout="constrained")
     axes = fig.subplots(nrows, ncols, squeeze=True)
     return fig, axes
 
@@ -82,10 +106,9 @@ def plot_loop(v, w, ax=None, label=None, title=None, xlabel="input v [a.u.]", yl
     >>> ax.get_title()
     'loop'
     """
-    v = np.asarray(v, dtype=float)
-    w = np.asarray(w, dtype=float)
-    if v.shape != w.shape:
-        raise ValueError(f"Parameters v and w have shapes {v.shape} and {w.shape} but should match")
+    v = _curve(v, "v")
+    w = _curve(w, "w", v.size, "v")
+    _axes(ax)
     if ax is None:
         _, ax = new_figure()
     ax.plot(v, w, label=label, lw=kw.pop("lw", 0.9), **kw)
@@ -133,12 +156,18 @@ def plot_operators(v, W, thresholds, ax=None, select=None, title=None, name="r")
     >>> [text.get_text() for text in ax.get_legend().get_texts()]
     ['r = 1', 'r = 3']
     """
-    v = np.asarray(v, dtype=float)
-    W = np.asarray(W, dtype=float)
-    r = np.asarray(thresholds, dtype=float)
+    v = _curve(v, "v")
+    W = as_float_array(W, "W")
+    r = as_signal(thresholds, "thresholds")
+    _axes(ax)
+    if select is not None:
+        select = as_signal(select, "select")
+        if np.any((select < r.min() - 1e-12) | (select > r.max() + 1e-12)):
+            raise ValueError(f"Parameter select is {select.tolist()} but should hold thresholds within "
+                             f"[{r.min()}, {r.max()}] (the nearest column is drawn)")
     if W.ndim != 2 or W.shape != (v.size, r.size):
         raise ValueError(
-            f"Parameter W has shape {W.shape} but should be ({v.size}, {r.size}) "
+            f"Parameter W has shape {W.shape} but should be (len(v), len(thresholds)) = ({v.size}, {r.size}) "
             "(samples x thresholds)"
         )
     if ax is None:
@@ -187,7 +216,8 @@ def plot_compensation(t, u, v, w, title=None, error_label=None):
     >>> fig.axes[0].get_title()
     'demo'
     """
-    t, u, v, w = (np.asarray(a, dtype=float) for a in (t, u, v, w))
+    t = _curve(t, "t")
+    u, v, w = (_curve(a, name, t.size, "t") for a, name in ((u, "u"), (v, "v"), (w, "w")))
     fig, (a1, a2) = new_figure(2, 1, size=(8.5, 6.0))
     a1.plot(t, u, lw=1.6, label="u(t) reference")
     a1.plot(t, v, lw=0.9, label="v(t) = inverse[u](t)")
@@ -234,6 +264,10 @@ def plot_loading_curve(r, simulated, analytic, ax=None, title=None):
     >>> ax.get_title()
     'phi'
     """
+    r = _curve(r, "r")
+    simulated = _curve(simulated, "simulated", r.size, "r")
+    analytic = _curve(analytic, "analytic", r.size, "r")
+    _axes(ax)
     if ax is None:
         _, ax = new_figure()
     ax.plot(r, analytic, lw=1.5, label="derived, eq. 35")

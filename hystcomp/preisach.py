@@ -300,7 +300,9 @@ class Preisach(_PlaneModel):
         >>> m.level([-1.0, -0.3, 0.0, 0.9]).tolist(), m.level(0.6)
         ([0, 1, 2, 4], 3)
         """
-        x = np.asarray(v, dtype=np.float64)
+        x = as_float_array(v, "v")
+        if np.isnan(x).any():
+            raise ValueError("Parameter v holds NaN; expected input values (+-inf give the end levels)")
         centres = self.v_min + (np.arange(self.n) + 0.5) * self.h   # as preisach_grid
         L = np.searchsorted(centres, x, side="right").astype(np.int64)
         return int(L) if L.ndim == 0 else L

@@ -30,6 +30,7 @@ import numpy as np
 
 from .envelopes import Atanh, Identity, Linear, Tanh
 from .models import GPI, MGPI, PI
+from ._validation import as_count, as_float_array, as_scalar
 
 __all__ = [
     "ThesisCase", "THESIS_TABLES", "DT", "time_vector", "density",
@@ -148,8 +149,8 @@ def time_vector(t_end=10.0, dt=DT):
     >>> t.tolist()
     [0.0, 0.25, 0.5, 0.75, 1.0]
     """
-    if not dt > 0:
-        raise ValueError(f"Parameter dt is {dt!r} but should be a positive step in seconds")
+    dt = as_scalar(dt, "dt", positive=True)
+    t_end = as_scalar(t_end, "t_end", nonnegative=True)
     n = int(round(t_end / dt))
     return np.linspace(0.0, n * dt, n + 1)
 
@@ -172,11 +173,23 @@ def density(r):
     >>> round(float(density(10.0)), 6)
     0.367879
     """
-    return np.exp(-0.1 * np.asarray(r, dtype=np.float64))
+    r = as_float_array(r, "r")
+    if not np.all(np.isfinite(r)):
+        raise ValueError("Parameter r holds NaN or inf; expected finite thresholds")
+    return np.exp(-0.1 * r)
 
 
 def _thresholds(spacing, n):
     return spacing * np.arange(1, n + 1)
+
+
+def _grid(spacing, R):
+    """spacing > 0, R >= spacing: the number of thresholds ``round(R / spacing)``."""
+    spacing = as_scalar(spacing, "spacing", positive=True)
+    R = as_scalar(R, "R", positive=True)
+    if R < spacing:
+        raise ValueError(f"Parameter R is {R} but should be >= spacing = {spacing} (at least one threshold)")
+    return spacing, R, int(round(R / spacing))
 
 
 def figure_2_1(dt=DT):
@@ -336,7 +349,7 @@ def section_4_1(spacing=0.05, R=10.0, dt=DT):
     >>> round(float(case.extra["phi"](10.0)), 4)
     46.7879
     """
-    n = int(round(R / spacing))
+    spacing, R, n = _grid(spacing, R)
     t = time_vector(10.0, dt)
     v = 10.0 * np.sin(2 * np.pi * t) / (1.0 + 0.1 * t)
     model = PI.from_density(density, _thresholds(spacing, n), p0=1.0)
@@ -373,7 +386,9 @@ def loading_curve_deviation(case, n_points=2001):
     >>> bool(0.0 < dev <= loading_curve_error_bound(0.05, 10.0))
     True
     """
-    r = np.linspace(0.0, case.extra["R"], n_points)
+    if not isinstance(case, ThesisCase) or "phi" not in case.extra:
+        raise TypeError(f"Parameter case is {case!r} but should be a ThesisCase made by section_4_1")
+    r = np.linspace(0.0, case.extra["R"], as_count(n_points, "n_points", 2))
     return float(np.max(np.abs(case.model.loading_curve(r) - case.extra["phi"](r))))
 
 
@@ -400,7 +415,7 @@ def loading_curve_error_bound(spacing, r):
     >>> loading_curve_error_bound(0.05, 10.0)
     0.5
     """
-    return float(spacing * r)
+    return float(as_scalar(spacing, "spacing", positive=True) * as_scalar(r, "r", nonnegative=True))
 
 
 def mgpi_bound(spacing=0.5, R=10.0, U=10.0, p0=1.0):
@@ -426,8 +441,9 @@ def mgpi_bound(spacing=0.5, R=10.0, U=10.0, p0=1.0):
     >>> round(mgpi_bound(), 4)
     71.6449
     """
-    r = _thresholds(spacing, int(round(R / spacing)))
-    return float(U * (p0 + np.sum(density(r) * spacing)))
+    spacing, R, n = _grid(spacing, R)
+    U, p0 = as_scalar(U, "U"), as_scalar(p0, "p0")
+    return float(U * (p0 + np.sum(density(_thresholds(spacing, n)) * spacing)))
 
 
 def mgpi_bound_limit(R=10.0, U=10.0, p0=1.0):
@@ -453,6 +469,8 @@ def mgpi_bound_limit(R=10.0, U=10.0, p0=1.0):
     >>> round(mgpi_bound_limit(), 4)
     73.2121
     """
+    R = as_scalar(R, "R", nonnegative=True)
+    U, p0 = as_scalar(U, "U"), as_scalar(p0, "p0")
     return float(U * (p0 + 10.0 - 10.0 * np.exp(-0.1 * R)))
 
 
