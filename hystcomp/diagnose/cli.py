@@ -74,17 +74,28 @@ def load_csv(path, time="t", input="v", output="y", min_samples=100):
         raise ValueError(f"{path} is not a text CSV file") from None
     if layout is None:
         raise ValueError(f"{path} is empty; expected a header row with columns {', '.join(names)}")
-    header, sep, skip, first_line, decimal = layout
+    header, sep, skip, first_line, decimal, first_row = layout
+    clock = time is not None and time in header and len(first_row) == len(header) and \
+        _is_clock(first_row[header.index(time)]) and not _is_number(first_row[header.index(time)])
     for name in names:
         if name not in header:
             raise ValueError(f"{path} has no column {name!r} (header: {', '.join(header)})")
     if len(set(header)) != len(header):
         dup = sorted({h for h in header if header.count(h) > 1})
         raise ValueError(f"{path} repeats the column name(s) {', '.join(map(repr, dup))} in its header")
+    options = dict(sep=sep, skiprows=skip, header=None, names=header, usecols=list(dict.fromkeys(names)),
+                   comment="#", skip_blank_lines=True, skipinitialspace=True, encoding="utf-8-sig",
+                   decimal=decimal, engine="c")
     try:
-        df = pd.read_csv(path, sep=sep, skiprows=skip, header=None, names=header,
-                         usecols=list(dict.fromkeys(names)), comment="#", skip_blank_lines=True,
-                         skipinitialspace=True, encoding="utf-8-sig", decimal=decimal, engine="c")
+        try:
+            # the fast path: every column parsed straight to float64 (a text
+            # time column of dates is read as text)
+            dtypes = {n: (str if n == time and clock else np.float64) for n in names}
+            df = pd.read_csv(path, dtype=dtypes, **options)
+        except ValueError:
+            # a cell that is not a number: read as text, and the checks below
+            # name the line
+            df = pd.read_csv(path, **options)
     except (pd.errors.ParserError, ValueError, UnicodeDecodeError) as exc:
         raise ValueError(f"{path} cannot be parsed as CSV ({' '.join(str(exc).split())})") from None
     out = {}
@@ -181,7 +192,8 @@ def _layout(path):
     if (any("," in c for c in sample_cells) and not any("." in c for c in sample_cells)
             and all(_is_number(c.replace(",", ".")) for c in sample_cells)):
         decimal = ","
-    return header, (r"\s+" if sep == " " else sep), skip, first, decimal
+    first_row = cells(data[0][1]) if data else []
+    return header, (r"\s+" if sep == " " else sep), skip, first, decimal, first_row
 
 
 def _is_number(cell):

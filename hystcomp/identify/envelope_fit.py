@@ -41,7 +41,7 @@ def _joint_covariance(out, make, xbest, asymmetric, v, y, sample_weight, validat
     r = out.thresholds
     xbest = np.asarray(xbest, dtype=np.float64)
     k_env = xbest.size
-    theta = np.asarray(out.param_values, dtype=np.float64)
+    theta = np.asarray(out.param_values, dtype=np.float64)[len(xbest):]   # the linear part
     lead = 1
     n_w = r.size
 
