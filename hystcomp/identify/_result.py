@@ -250,6 +250,9 @@ class FitResult:
     def _param_lines(self):
         if not len(self.param_names):
             return []
+        if len(self.param_names) > 30:       # a Preisach plane: the cells are in .params
+            return [f"  {len(self.param_names)} parameters (by name in .params, e.g. "
+                    f"{self.param_names[0]!r}); no listing"]
         err = self.stderr
         width = max(len(n) for n in self.param_names)
         lines = ["  parameters (value +/- standard error):"]
