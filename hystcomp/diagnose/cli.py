@@ -50,7 +50,7 @@ def load_csv(path, time="t", input="v", output="y", min_samples=100):
     >>> path = os.path.join(folder, "record.csv")
     >>> k = np.arange(100)
     >>> np.savetxt(path, np.column_stack([0.01 * k, k % 7, k % 5]), delimiter=";",
-    ...            header="# bench 3\ntime;volt;um\ns;V;um", comments="")
+    ...            header="# bench 3\\ntime;volt;um\\ns;V;um", comments="")
     >>> t, v, y = load_csv(path, time="time", input="volt", output="um")
     >>> t.size, float(v[8]), float(y[8])
     (100, 1.0, 3.0)

@@ -185,6 +185,19 @@ class HysteresisRegressor(*_BASES):
     #: scikit-learn's common checks a model with memory cannot pass (see the module)
     expected_failed_checks = EXPECTED_FAILED_CHECKS
 
+    if _BASES:
+        # no metadata routing of sample_weight / validation (scikit-learn would
+        # add set_fit_request and set_score_request, whose docstrings do not
+        # build in hystcomp's docs); pass them to fit() and score() directly
+        from sklearn.utils import metadata_routing as _routing
+
+        # (v is the input signal, scikit-learn's X, not metadata)
+        __metadata_request__fit = {"v": _routing.UNUSED, "sample_weight": _routing.UNUSED,
+                                   "validation": _routing.UNUSED}
+        __metadata_request__predict = {"v": _routing.UNUSED}
+        __metadata_request__score = {"v": _routing.UNUSED, "sample_weight": _routing.UNUSED}
+        del _routing
+
     def __init__(self, model="mgpi", thresholds=None, envelope=None, envelope_left=None,
                  envelope_right=None, asymmetric=False, H=None, constraints="nonnegative",
                  regularization=None, offset=True, n_thresholds=20, solver=None):
