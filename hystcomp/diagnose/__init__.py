@@ -55,18 +55,23 @@ __all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "diagnose_many", "evidence
 ALL = EFFECTS
 
 
-def diagnose(t, v, y, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20, progress=True):
+def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20,
+             progress=True, *, time="t", input="v", output="y"):
     """Name the effects a PI model lacks by evidence, add them, and give an
     honest verdict.
 
     Parameters
     ----------
-    t : array_like, shape (n,), or None
+    t : array_like, shape (n,), None or pandas.DataFrame
         Time [s] (increasing, uniformly sampled, any step), or None for a
         record without a time axis (then rate_dependence, creep, drift,
         gain_drift and delay are untestable and reported in ``untested``).
+        A datetime or timedelta axis (numpy or pandas) counts in seconds
+        from its first sample.  A DataFrame is the whole record, its
+        columns named by `time`, `input` and `output` (then `v` and `y`
+        are not given).
     v, y : array_like, shape (n,)
-        Input and measured output.
+        Input and measured output (pandas Series welcome).
     effects : sequence of str
         Candidates among :data:`EFFECTS` and the effects of parts you
         registered (:func:`hystcomp.identify.parts.register`); default all
@@ -83,6 +88,11 @@ def diagnose(t, v, y, effects=ALL, validation=0.3, max_effects=4, base="pi", n_t
         Number of plays of the default base model.
     progress : bool
         Progress lines on stderr.
+    time : str or None
+        With a DataFrame: the time column (or the index's name); None for a
+        record without a time axis.
+    input, output : str
+        With a DataFrame: the input and measured-output columns.
 
     Returns
     -------
@@ -95,11 +105,27 @@ def diagnose(t, v, y, effects=ALL, validation=0.3, max_effects=4, base="pi", n_t
     >>> rep = diagnose(d.t, d.v, d.y, progress=False)
     >>> rep.effects[0], rep.verdict, rep.rms_after < 0.5 * rep.rms_before
     ('drift', 'explained', True)
+
+    The same record as a DataFrame with a datetime time column:
+
+    >>> import pandas as pd
+    >>> df = pd.DataFrame({"time": pd.Timestamp("2024-05-01 12:00") + pd.to_timedelta(d.t, unit="s"),
+    ...                    "volt": d.v, "um": d.y})
+    >>> diagnose(df, time="time", input="volt", output="um", effects=["drift"],
+    ...          progress=False).effects
+    ['drift']
     """
     from .._validation import check_choice
     from ..models import PI
 
+    from ..identify._records import _frame_record, _is_frame
     from ..identify.parts import PARTS
+
+    if _is_frame(t):
+        t, v, y, _ = _frame_record(t, time, input, output, v, y, what="t")
+    elif v is None or y is None:
+        raise TypeError("Parameters v and y are missing; pass diagnose(t, v, y) with arrays or "
+                        "diagnose(frame, time=..., input=..., output=...) with a DataFrame")
 
     effects = list(effects)
     known = tuple(EFFECTS) + tuple(sorted({c.effect for c in PARTS.values() if c.effect not in EFFECTS}))

@@ -8,19 +8,29 @@ import sys
 
 import numpy as np
 
-def load_csv(path, time="t", input="v", output="y"):
-    """(t, v, y) from a CSV file with a header row; ValueError with a one-line
-    reason for missing columns, non-numeric cells, NaN, unsorted time or too
-    few samples.  ``time=None``: the file has no time column (t is None).
+def load_csv(path, time="t", input="v", output="y", min_samples=100):
+    """(t, v, y) from a CSV file with a header row, read by pandas; ValueError
+    with a one-line reason for missing columns, non-numeric cells, NaN,
+    unsorted time or too few samples.  ``time=None``: the file has no time
+    column (t is None).
+
+    What measurement files carry is understood: the separator is sniffed
+    (comma, semicolon, tab, whitespace or ``|``), lines starting with ``#``
+    are comments, a row of units right below the header (``s,V,um``) is
+    skipped, ``.gz``/``.bz2``/``.zip``/``.xz`` files are decompressed, a
+    byte-order mark (Excel's "CSV UTF-8") is ignored, and a time column of
+    dates and times (ISO 8601) becomes seconds from the first sample.
 
     Parameters
     ----------
     path : str or path-like
-        The CSV file (comma separated, a header row, at least 100 samples).
+        The CSV file (a header row, at least `min_samples` samples).
     time : str or None
         Header name of the time column [s]; None for a record without one.
     input, output : str
         Header names of the input and output columns.
+    min_samples : int
+        Fewest samples accepted (diagnose needs 100).
 
     Returns
     -------
@@ -39,8 +49,8 @@ def load_csv(path, time="t", input="v", output="y"):
     >>> folder = tempfile.mkdtemp()
     >>> path = os.path.join(folder, "record.csv")
     >>> k = np.arange(100)
-    >>> np.savetxt(path, np.column_stack([0.01 * k, k % 7, k % 5]), delimiter=",",
-    ...            header="time,volt,um", comments="")
+    >>> np.savetxt(path, np.column_stack([0.01 * k, k % 7, k % 5]), delimiter=";",
+    ...            header="# bench 3\\ntime;volt;um\\ns;V;um", comments="")
     >>> t, v, y = load_csv(path, time="time", input="volt", output="um")
     >>> t.size, float(v[8]), float(y[8])
     (100, 1.0, 3.0)
@@ -51,49 +61,199 @@ def load_csv(path, time="t", input="v", output="y"):
     >>> import shutil
     >>> shutil.rmtree(folder)
     """
-    import csv
+    import pandas as pd
 
+    names = [n for n in (time, input, output) if n is not None]
     try:
-        # utf-8-sig: Excel's "CSV UTF-8" starts with a byte-order mark
-        with open(path, newline="", encoding="utf-8-sig") as fh:
-            rows = list(csv.reader(fh))
+        layout = _layout(path)
     except OSError as exc:
         raise ValueError(f"cannot read {path}: {exc.strerror or exc}") from None
-    except UnicodeDecodeError:
+    except (UnicodeDecodeError, EOFError, ValueError) as exc:
+        if isinstance(exc, ValueError) and str(exc).startswith(str(path)):
+            raise
         raise ValueError(f"{path} is not a text CSV file") from None
-    if not rows:
-        names = ", ".join(n for n in (time, input, output) if n is not None)
-        raise ValueError(f"{path} is empty; expected a header row with columns {names}")
-    header = [h.strip() for h in rows[0]]
-    cols = {}
-    for name in (time, input, output):
-        if name is None:
-            continue
+    if layout is None:
+        raise ValueError(f"{path} is empty; expected a header row with columns {', '.join(names)}")
+    header, sep, skip, first_line, decimal, first_row = layout
+    clock = time is not None and time in header and len(first_row) == len(header) and \
+        _is_clock(first_row[header.index(time)]) and not _is_number(first_row[header.index(time)])
+    for name in names:
         if name not in header:
             raise ValueError(f"{path} has no column {name!r} (header: {', '.join(header)})")
-        cols[name] = header.index(name)
-    body = [r for r in rows[1:] if any(c.strip() for c in r)]
-    out = {name: np.empty(len(body)) for name in cols}
-    for i, row in enumerate(body, start=2):
-        for name, j in cols.items():
-            try:
-                val = float(row[j])
-            except (IndexError, ValueError):
-                cell = row[j] if j < len(row) else ""
-                raise ValueError(f"{path} line {i}: column {name!r} holds {cell!r}, not a number") from None
-            if not math.isfinite(val):
-                raise ValueError(f"{path} line {i}: column {name!r} holds {val}; expected a finite number")
-            out[name][i - 2] = val
-    if len(body) < 100:
-        raise ValueError(f"{path} has {len(body)} samples; diagnose needs at least 100")
+    if len(set(header)) != len(header):
+        dup = sorted({h for h in header if header.count(h) > 1})
+        raise ValueError(f"{path} repeats the column name(s) {', '.join(map(repr, dup))} in its header")
+    options = dict(sep=sep, skiprows=skip, header=None, names=header, usecols=list(dict.fromkeys(names)),
+                   comment="#", skip_blank_lines=True, skipinitialspace=True, encoding="utf-8-sig",
+                   decimal=decimal, engine="c")
+    try:
+        try:
+            # the fast path: every column parsed straight to float64 (a text
+            # time column of dates is read as text)
+            dtypes = {n: (str if n == time and clock else np.float64) for n in names}
+            df = pd.read_csv(path, dtype=dtypes, **options)
+        except ValueError:
+            # a cell that is not a number: read as text, and the checks below
+            # name the line
+            df = pd.read_csv(path, **options)
+    except (pd.errors.ParserError, ValueError, UnicodeDecodeError) as exc:
+        raise ValueError(f"{path} cannot be parsed as CSV ({' '.join(str(exc).split())})") from None
+    out = {}
+    for name in names:
+        col = df[name]
+        if name == time and col.dtype.kind not in "biuf":
+            col = _clock_times(col)
+        out[name] = _finite_column(path, name, col, first_line)
+    n = len(df)
+    if n < min_samples:
+        raise ValueError(f"{path} has {n} samples; diagnose needs at least {min_samples}")
     if time is None:
         return None, out[input], out[output]
     t = out[time]
     d = np.diff(t)
     if np.any(d <= 0):
         k = int(np.argmax(d <= 0))
-        raise ValueError(f"{path} line {k + 3}: time {t[k + 1]} does not increase (previous {t[k]})")
+        raise ValueError(f"{path} line {first_line + k + 1}: time {t[k + 1]} does not increase "
+                         f"(previous {t[k]})")
     return t, out[input], out[output]
+
+
+def _open_text(path):
+    """A text handle on a (possibly compressed) file, byte-order mark removed."""
+    import io
+
+    p = os.fspath(path)
+    low = p.lower()
+    if low.endswith(".gz"):
+        import gzip
+
+        raw = gzip.open(p, "rb")
+    elif low.endswith(".bz2"):
+        import bz2
+
+        raw = bz2.open(p, "rb")
+    elif low.endswith(".xz"):
+        import lzma
+
+        raw = lzma.open(p, "rb")
+    elif low.endswith(".zip"):
+        import zipfile
+
+        zf = zipfile.ZipFile(p)
+        raw = zf.open(zf.namelist()[0])
+    else:
+        raw = open(p, "rb")
+    return io.TextIOWrapper(raw, encoding="utf-8-sig", newline="")
+
+
+def _layout(path):
+    """(header names, separator, physical lines to skip, file line of the
+    first data row) from the file's first lines, or None for an empty file.
+    Comment lines (``#``) before the header and a units row below it are
+    skipped."""
+    import csv
+
+    with _open_text(path) as fh:
+        head = []
+        for _ in range(64):
+            line = fh.readline()
+            if not line:
+                break
+            head.append(line.rstrip("\r\n"))
+    if any("\x00" in line for line in head):
+        raise ValueError("binary")
+    rows = [(i, line) for i, line in enumerate(head) if line.strip() and not line.lstrip().startswith("#")]
+    if not rows:
+        return None
+    h_i, h_line = rows[0]
+    sample = "\n".join(line for _, line in rows[:20])
+    try:
+        sep = csv.Sniffer().sniff(sample, delimiters=",;\t| ").delimiter
+    except csv.Error:
+        sep = ","
+
+    def cells(line):
+        return line.split() if sep == " " else [c.strip() for c in next(csv.reader([line], delimiter=sep))]
+
+    header = cells(h_line)
+    skip = list(range(h_i + 1))       # comments and blank lines before the header, and the header
+    first = h_i + 2                   # file line (1-based) of the first data row
+    data = rows[1:]
+    if data:
+        u_i, u_line = data[0]
+        row = cells(u_line)
+        if row and not any(_is_number(c) for c in row) and not any(_is_clock(c) for c in row):
+            skip.append(u_i)          # a row of units below the header
+            first = u_i + 2
+            data = data[1:]
+    # "0,25;1,5": a semicolon file with decimal commas (European locales)
+    decimal = "."
+    sample_cells = [c for _, line in data[:20] for c in cells(line) if c] if sep == ";" else []
+    if (any("," in c for c in sample_cells) and not any("." in c for c in sample_cells)
+            and all(_is_number(c.replace(",", ".")) for c in sample_cells)):
+        decimal = ","
+    first_row = cells(data[0][1]) if data else []
+    return header, (r"\s+" if sep == " " else sep), skip, first, decimal, first_row
+
+
+def _is_number(cell):
+    try:
+        float(cell)
+    except ValueError:
+        return False
+    return True
+
+
+def _is_clock(cell):
+    """A date/time cell (an ISO 8601 time column is data, not units)."""
+    import re
+
+    return re.match(r"\s*\d{1,4}[-/:.]\d", cell) is not None
+
+
+def _clock_times(col):
+    """A text time column of dates/times as seconds from the first sample
+    (left as text when it is not one: the number check then names the cell)."""
+    import pandas as pd
+
+    from ..identify._records import _seconds
+
+    try:
+        stamps = pd.to_datetime(col, format="ISO8601")
+    except (ValueError, TypeError):
+        try:
+            stamps = pd.to_timedelta(col)
+        except (ValueError, TypeError):
+            return col
+    if stamps.isna().any():
+        return col
+    return pd.Series(_seconds(stamps, "time"), index=col.index)
+
+
+def _finite_column(path, name, col, first_line):
+    """A column as float64, ValueError naming the file line of the first
+    cell that is not a finite number."""
+    import pandas as pd
+
+    if col.dtype.kind in "biuf":
+        vals = col.to_numpy(dtype=np.float64)
+        bad = ~np.isfinite(vals)
+        if bad.any():
+            k = int(np.argmax(bad))
+            raise ValueError(f"{path} line {first_line + k}: column {name!r} holds {vals[k]}; expected a "
+                             "finite number")
+        return vals
+    vals = pd.to_numeric(col, errors="coerce").to_numpy(dtype=np.float64, na_value=np.nan)
+    bad = ~np.isfinite(vals)
+    if not bad.any():
+        return vals
+    k = int(np.argmax(bad))
+    cell = col.iloc[k]
+    if isinstance(cell, str) and _is_number(cell):
+        raise ValueError(f"{path} line {first_line + k}: column {name!r} holds {float(cell)}; expected a "
+                         "finite number")
+    raise ValueError(f"{path} line {first_line + k}: column {name!r} holds "
+                     f"{'' if cell is None or cell != cell else cell!r}, not a number")
 
 
 def add_arguments(parser):

@@ -6,6 +6,7 @@ import math
 import numpy as np
 
 from .._validation import as_scalar, as_signal
+from ..identify._records import _seconds
 
 
 class Record:
@@ -13,7 +14,8 @@ class Record:
     the figures of the excitation.
 
     ``t = None``: no time axis (a quasi-static point sequence, e.g. a B-H
-    loop); the sample index is the only axis.
+    loop); the sample index is the only axis.  A datetime or timedelta `t`
+    (numpy or pandas) is read as seconds from its first sample.
     """
 
     def __init__(self, t, v, y, validation):
@@ -26,7 +28,8 @@ class Record:
             self.t = None
             self.dt = None
         else:
-            self.t = as_signal(t, "t", min_length=2)
+            # a datetime or timedelta axis: seconds from the first sample
+            self.t = as_signal(_seconds(t, "t"), "t", min_length=2)
             if self.t.size != n:
                 raise ValueError(f"Parameter v has {n} samples but t has {self.t.size}; expected equal lengths")
             d = np.diff(self.t)

@@ -45,3 +45,5 @@ __all__ = ["FitResult", "EnvelopeFitResult", "HysteresisRegressor", "fit_weights
 for _name in __all__:
     globals()[_name].__module__ = __name__
 del _name
+# FitResult, EnvelopeFitResult and ModelFit are one class (the names are kept)
+FitResult.__qualname__ = FitResult.__name__ = "FitResult"

@@ -1,6 +1,8 @@
 """Input checking of identification records (one or several (v, y) records, weights, held-out masks)."""
 
 
+import datetime
+
 import numpy as np
 
 from .._validation import as_scalar, as_signal
@@ -107,3 +109,140 @@ def _apply_validation(recs, validation, multi):
 
 
 # ----------------------------------------------------------------------------
+
+
+# ----------------------------------------------------------------------------
+# pandas data in and out (imported lazily: array calls never load pandas)
+# ----------------------------------------------------------------------------
+def _is_frame(x):
+    """True for a pandas DataFrame (checked without importing pandas)."""
+    return type(x).__module__.startswith("pandas") and hasattr(x, "columns") and hasattr(x, "index")
+
+
+def _is_series(x):
+    """True for a pandas Series or Index (checked without importing pandas)."""
+    return (type(x).__module__.startswith("pandas") and getattr(x, "ndim", 0) == 1
+            and not hasattr(x, "columns"))
+
+
+def _seconds(t, name="t"):
+    """A datetime or timedelta time axis as float seconds from its first
+    sample (numpy datetime64/timedelta64 arrays, pandas Series/Index, with or
+    without a time zone); anything else is returned unchanged.
+
+    Raises
+    ------
+    ValueError
+        For a missing time (NaT), naming the sample.
+    """
+    if t is None:
+        return None
+    dtype = getattr(t, "dtype", None)
+    kind = getattr(dtype, "kind", None)
+    tz = getattr(dtype, "tz", None)
+    if kind == "O" and np.ndim(t) == 1 and len(t) and _is_time_object(t[0]):
+        import pandas as pd       # datetime objects (e.g. tz-aware timestamps in an object array)
+
+        conv = pd.to_timedelta if isinstance(t[0], datetime.timedelta) else pd.to_datetime
+        t = conv(np.asarray(t)) if conv is pd.to_timedelta else conv(np.asarray(t), utc=True)
+        dtype, kind, tz = t.dtype, t.dtype.kind, getattr(t.dtype, "tz", None)
+    if kind not in ("M", "m") and tz is None:
+        return t
+    if _is_series(t):
+        t = t.to_numpy()    # tz-aware values become UTC datetime64
+        if t.dtype.kind == "O":          # tz-aware Index -> Timestamp objects
+            import pandas as pd
+
+            t = pd.to_datetime(t, utc=True).tz_localize(None).to_numpy()
+    t = np.asarray(t)
+    if t.ndim != 1 or t.size == 0:
+        raise ValueError(f"Parameter {name} has shape {t.shape} but should be a 1-D array of times")
+    bad = np.isnat(t)
+    if bad.any():
+        k = int(np.argmax(bad))
+        raise ValueError(f"Parameter {name} holds a missing time (NaT) at sample index {k}; "
+                         "expected a time for every sample")
+    return (t - t[0]) / np.timedelta64(1, "s")
+
+
+def _is_time_object(x):
+    return isinstance(x, (datetime.datetime, datetime.timedelta, np.datetime64, np.timedelta64))
+
+
+def _column(data, key, arg, what="data"):
+    """Column `key` of a DataFrame (`arg` names the keyword that chose it);
+    the index when `key` is the index's name and not a column."""
+    if key in data.columns:
+        return data[key]
+    if key is not None and key == data.index.name:
+        return data.index.to_series(index=data.index)
+    raise ValueError(f"Parameter {arg} is {key!r} but the DataFrame {what} has no such column "
+                     f"(columns: {', '.join(map(str, data.columns))})")
+
+
+def _frame_record(data, time, input, output, v=None, y=None, what="data"):
+    """(t, v, y, index) of a DataFrame record: the columns named by
+    `time` (None: no time axis; a datetime or timedelta column becomes
+    seconds from the first sample), `input` and `output`, as float arrays.
+    A frame excludes separate v and y arguments."""
+    if v is not None or y is not None:
+        raise TypeError(f"Parameter {what} is a DataFrame, so v and y must not be given; name its "
+                        "columns with input= and output= instead")
+    t = None if time is None else _numbers(_seconds(_column(data, time, "time", what), "time"), "time", time)
+    vv = _numbers(_column(data, input, "input", what), "input", input)
+    yy = _numbers(_column(data, output, "output", what), "output", output)
+    return t, vv, yy, data.index
+
+
+def _numbers(col, arg, key):
+    """A column as float64 (missing values as NaN, which the checks then
+    name); TypeError naming the column for text."""
+    if not _is_series(col):
+        return col
+    try:
+        return col.to_numpy(dtype=np.float64, na_value=np.nan)
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter {arg} is {key!r} but that column holds {col.dtype} values; expected "
+                        "numbers") from None
+
+
+def _index_of(*xs):
+    """The index of the first pandas Series/DataFrame among `xs` (None if none)."""
+    for x in xs:
+        if _is_frame(x) or (_is_series(x) and hasattr(x, "index") and not hasattr(x, "levels")
+                            and type(x).__name__ == "Series"):
+            return x.index
+    return None
+
+
+def _with_index(arr, index, name=None):
+    """`arr` as a pandas Series on `index` (unchanged without an index or on
+    a length mismatch)."""
+    if index is None or np.ndim(arr) != 1 or len(index) != len(arr):
+        return arr
+    import pandas as pd
+
+    return pd.Series(arr, index=index, name=name)
+
+
+def _frame_arguments(v, y, input, output):
+    """(v, y, index) with DataFrame records unpacked: a frame (or a list
+    of frames, one per record) as `v` gives its `input` and `output`
+    columns; Series keep their index (returned, None for plain arrays;
+    a list of indexes for several records)."""
+    if _is_frame(v):
+        _, vv, yy, index = _frame_record(v, None, input, output, None, y, what="v")
+        return vv, yy, index
+    if isinstance(v, (list, tuple)) and v and all(_is_frame(e) for e in v):
+        if y is not None:
+            raise TypeError("Parameter v is a list of DataFrames, so y must not be given; name the "
+                            "columns with input= and output= instead")
+        recs = [_frame_record(e, None, input, output, what=f"v[{j}]") for j, e in enumerate(v)]
+        return [r[1] for r in recs], [r[2] for r in recs], [r[3] for r in recs]
+    if y is None:
+        raise TypeError("Parameter y is missing; pass (v, y) arrays or a DataFrame with input= and "
+                        "output= columns")
+    if _is_record_list(v) and isinstance(y, (list, tuple)):
+        idx = [_index_of(a, b) for a, b in zip(v, y)]
+        return v, y, (idx if any(i is not None for i in idx) else None)
+    return v, y, _index_of(v, y)

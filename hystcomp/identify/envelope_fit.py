@@ -7,39 +7,85 @@ import numpy as np
 
 from .._validation import check_choice
 from ..envelopes import Atanh, Identity, Linear, Polynomial, Tanh
-from ._records import _records, _apply_validation
+from ._records import _apply_validation, _frame_arguments, _is_record_list, _is_series, _records
 from .solver import _Problem
-from .weights import FitResult, _check_data, fit_weights
+from ._result import FitResult
+from .weights import _attach_index, _check_data, fit_weights
 
 # envelopes by variable projection
 # ----------------------------------------------------------------------------
-class EnvelopeFitResult(FitResult):
-    """Outcome of :func:`fit`: a :class:`FitResult` plus ``envelope``,
-    ``envelope_parameters``, ``cost`` (final training MSE), ``converged``,
-    ``optimizer_message``, ``nfev`` and ``at_bound`` (indices of parameters
-    that ended on a bound of the search interval).
+#: the outcome of :func:`fit` is a :class:`FitResult` (this name is kept)
+EnvelopeFitResult = FitResult
 
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp import MGPI
-    >>> from hystcomp.envelopes import Tanh
-    >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
-    >>> true = MGPI([1.0, 2.0], [0.5, 0.2], 1.0, envelope=Tanh(1 / 0.3, 0.3))
-    >>> res = fit(v, true.simulate(v), thresholds=[1.0, 2.0])
-    >>> round(res.envelope.b, 4), bool(res.converged), res.at_bound
-    (0.3, True, [])
-    """
+#: names of the searched envelope parameters (the coordinates of the search)
+_ENVELOPE_NAMES = {
+    ("tanh", False): ["ln(b V)"], ("atanh", False): ["b V"], ("polynomial", False): ["c2", "c3"],
+    ("tanh", True): ["ln(b_l V)", "h_l/V", "ln rho", "ln(b_r V)", "h_r/V"],
+    ("atanh", True): ["b_l V", "ln rho", "b_r V"], ("linear", True): ["ln rho"],
+    ("polynomial", True): ["c2_l", "c3_l", "ln rho", "c2_r", "c3_r"],
+}
 
-    def report(self):
-        env = (repr(self.envelope) if self.envelope is not None
-               else f"left {self.envelope_left!r}, right {self.envelope_right!r}")
-        head = (f"envelope fit: {env}; parameters {self.envelope_parameters}; "
-                f"cost (training MSE) = {self.cost:.6g}; converged = {self.converged} "
-                f"({self.optimizer_message}); {self.nfev} evaluations")
-        if self.at_bound:
-            head += f"\n  parameters {self.at_bound} ended on a bound of the search interval"
-        return head + "\n" + super().report()
+
+def _joint_covariance(out, make, xbest, asymmetric, v, y, sample_weight, validation, bounds):
+    """Covariance of the envelope parameters and the weights together, from
+    the Jacobian of the prediction (central differences for the envelope
+    parameters, the regressor columns for the weights: the prediction is
+    linear in them), on the training samples.  Weights at 0 (held by the
+    constraint) and envelope parameters on a bound of the search are not
+    free (standard error 0 and NaN respectively)."""
+    from ..models import MGPI
+    from ._result import covariance_from_jacobian
+
+    recs, multi = _records(v, y, sample_weight)
+    _apply_validation(recs, validation, multi)
+    r = out.thresholds
+    xbest = np.asarray(xbest, dtype=np.float64)
+    k_env = xbest.size
+    theta = np.asarray(out.param_values, dtype=np.float64)[len(xbest):]   # the linear part
+    lead = 1
+    n_w = r.size
+
+    def predict(x, th):
+        e = make(x)
+        kw = dict(envelope_left=e[0], envelope_right=e[1]) if asymmetric else dict(envelope=e)
+        mdl = MGPI(r, th[lead:lead + n_w], th[0], **kw)
+        off = th[lead + n_w] if th.size > lead + n_w else 0.0
+        return np.concatenate([mdl.simulate(rec[0]) + off for rec in recs])
+
+    base = predict(xbest, theta)
+    cols, free = [], []
+    for j in range(k_env):
+        lo, hi = bounds[j]
+        h = 1e-5 * max(1.0, abs(xbest[j]))
+        if j in out.at_bound or not (lo < xbest[j] - h and xbest[j] + h < hi):
+            continue
+        xp, xm = xbest.copy(), xbest.copy()
+        xp[j] += h
+        xm[j] -= h
+        try:
+            cols.append((predict(xp, theta) - predict(xm, theta)) / (2 * h))
+        except ValueError:        # a step outside the envelope's domain
+            continue
+        free.append(j)
+    for i in range(theta.size):
+        # weights held at 0 by the constraint (or never reached) are not free
+        if lead <= i < lead + n_w and abs(theta[i]) <= 1e-9 * max(float(np.max(np.abs(theta))), 1e-300):
+            continue
+        th = theta.copy()
+        th[i] += 1.0
+        cols.append(predict(xbest, th) - base)
+        free.append(k_env + i)
+    w = np.concatenate([rec[2] if rec[2] is not None else np.ones(rec[0].size) for rec in recs])
+    yy = np.concatenate([rec[1] for rec in recs])
+    J = np.column_stack(cols)
+    cov_free = covariance_from_jacobian(J, yy - base, weights=w)
+    m = k_env + theta.size
+    cov = np.zeros((m, m))
+    cov[np.ix_(free, free)] = cov_free
+    for j in range(k_env):
+        if j not in free:
+            cov[j, j] = np.nan
+    return cov
 
 
 def _family(envelope, recs):
@@ -121,9 +167,9 @@ def _family_asymmetric(envelope, recs):
     )
 
 
-def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="nonnegative",
+def fit(v, y=None, envelope="tanh", asymmetric=False, thresholds=None, constraints="nonnegative",
         regularization=None, offset=True, solver=None, sample_weight=None, validation=None,
-        n_thresholds=20, maxiter=60, optimizer=None):
+        n_thresholds=20, maxiter=60, optimizer=None, *, input="v", output="y"):
     """Identify an mGPI model with its envelope by variable projection.
 
     For each candidate envelope the weights are solved exactly (the convex
@@ -136,7 +182,10 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
     Parameters
     ----------
     v, y, thresholds, constraints, regularization, offset, solver, sample_weight, validation, n_thresholds
-        As in :func:`fit_weights`.
+        As in :func:`fit_weights` (a DataFrame as `v` is the record, its
+        columns named by `input` and `output`).
+    input, output : str
+        With a DataFrame `v`: the input and measured-output columns.
     envelope : {"tanh", "atanh", "linear", "polynomial"} or (make, x0, bounds)
         The family: ``tanh(b v)/b``, ``atanh(b v)/b``, the identity (a PI
         fit: Linear(k) only rescales the weights), or ``v + c2 v^2/V +
@@ -183,12 +232,28 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
     """
     from scipy import optimize
 
+    v, y, index = _frame_arguments(v, y, input, output)
+    v, y = _plain(v), _plain(y)
+    out = _fit(v, y, envelope, asymmetric, thresholds, constraints, regularization, offset, solver,
+               sample_weight, validation, n_thresholds, maxiter, optimizer, optimize)
+    return _attach_index(out, index)
+
+
+def _plain(x):
+    """Records without their pandas index (the index is put back on the result)."""
+    if _is_record_list(x):
+        return [e.to_numpy() if _is_series(e) else e for e in x]
+    return x.to_numpy() if _is_series(x) else x
+
+
+def _fit(v, y, envelope, asymmetric, thresholds, constraints, regularization, offset, solver,
+         sample_weight, validation, n_thresholds, maxiter, optimizer, optimize):
     kw = dict(thresholds=thresholds, constraints=constraints, regularization=regularization,
               offset=offset, solver=solver, sample_weight=sample_weight, validation=validation,
               n_thresholds=n_thresholds)
     if envelope == "linear" and not asymmetric:
         res = fit_weights(v, y, model="pi", **kw)
-        out = EnvelopeFitResult(**res.__dict__)
+        out = FitResult(**res.__dict__)
         out.envelope_parameters = []
         out.cost, out.converged, out.optimizer_message, out.nfev = res.train_mse, True, \
             "no envelope parameter (Linear(k) only rescales the weights)", 0
@@ -266,7 +331,7 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
                                      diff_step=1e-5, max_nfev=maxiter)
         success, message, nfev, xbest = bool(opt.status > 0), str(opt.message), int(opt.nfev), opt.x
     res = fit_weights(v, y, **envs(xbest), **kw)
-    out = EnvelopeFitResult(**res.__dict__)
+    out = FitResult(**res.__dict__)
     out.envelope_parameters = np.asarray(xbest).tolist()
     out.cost = res.train_mse
     out.converged = success
@@ -276,6 +341,19 @@ def fit(v, y, envelope="tanh", asymmetric=False, thresholds=None, constraints="n
     # b -> 0 is the PI model): worth saying, the optimum may lie outside
     out.at_bound = [i for i, (x, (lo, hi)) in enumerate(zip(xbest, bounds))
                     if min(x - lo, hi - x) <= 1e-3 * (hi - lo)]
+    names = _ENVELOPE_NAMES.get((envelope, bool(asymmetric)) if isinstance(envelope, str) else None,
+                                [f"envelope[{i}]" for i in range(len(xbest))])
+    out.param_names = list(names) + list(res.param_names)
+    out.param_values = np.concatenate([np.asarray(xbest, dtype=np.float64), res.param_values])
+    out.n_parameters = res.n_parameters + len(xbest)
+    from ._result import information_criteria
+
+    out.aic, out.bic = information_criteria(out.rss, out.n_train, out.n_parameters)
+    try:
+        out.covariance = _joint_covariance(out, make, xbest, asymmetric, v, y, sample_weight, validation,
+                                           bounds)
+    except (ValueError, np.linalg.LinAlgError):
+        out.covariance = None
     return out
 
 

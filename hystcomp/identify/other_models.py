@@ -6,80 +6,28 @@ import numpy as np
 
 from .._validation import as_scalar, as_signal, check_choice
 from ._records import _BLOCK
+from ._result import FitResult, information_criteria
 from .solver import _pick_solver, _split_gram, solve_weights
 from .envelope_fit import fit
 from .weights import fit_weights
 
 # backlash-like, Duhem, and a side-by-side comparison
 # ----------------------------------------------------------------------------
-class ModelFit:
-    """Outcome of :func:`fit_preisach`, :func:`fit_kp`, :func:`fit_bouc_wen`,
-    :func:`fit_backlash_like` and :func:`fit_duhem`.
+#: the outcome of the fits of this module is a :class:`FitResult` (this name is kept)
+ModelFit = FitResult
 
-    Attributes
-    ----------
-    model : HysteresisModel
-        The identified model (its offset included: ``model.simulate(v)``
-        predicts y).
-    rmse : float
-        RMS of the training residuals.
-    n_parameters : int
-        Number of fitted parameters (weights or shape parameters, offset).
-    fit_time : float
-        Wall time of the fit [s].
-    success : bool
-        The optimiser's convergence flag.
-    message : str
-        The optimiser's message.
 
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp.differential import BacklashLike
-    >>> v = 4 * np.sin(np.linspace(0, 20, 2000))
-    >>> res = fit_backlash_like(v, BacklashLike(alpha=1.5, c=3.0, B1=1.0).simulate(v))
-    >>> res.n_parameters, bool(res.rmse < 1e-6), bool(res.success)
-    (4, True, True)
-    """
+def _model_fit(model, e, n_parameters, t0, success, message, names, values, covariance=None):
+    """The FitResult of a fit whose model carries its own offset."""
+    import time
 
-    def __init__(self, **kw):
-        self.__dict__.update(kw)
-
-    def predict(self, v, initial_state=None):
-        """The model's output (offset included).
-
-        Parameters
-        ----------
-        v : array_like, shape (n_samples,)
-            Input record.
-        initial_state : ndarray, optional
-            State of the model at the first sample (default:
-            ``model.default_state()``).
-
-        Returns
-        -------
-        ndarray, shape (n_samples,)
-
-        Examples
-        --------
-        >>> import numpy as np
-        >>> from hystcomp.differential import BacklashLike
-        >>> v = 4 * np.sin(np.linspace(0, 20, 2000))
-        >>> true = BacklashLike(alpha=1.5, c=3.0, B1=1.0)
-        >>> res = fit_backlash_like(v, true.simulate(v))
-        >>> bool(np.allclose(res.predict(v), true.simulate(v), atol=1e-6))
-        True
-        """
-        return self.model.simulate(v, initial_state=initial_state)
-
-    def report(self):
-        """A readable summary (str)."""
-        return (f"{self.model!r}\n  {self.n_parameters} parameters, training rmse = {self.rmse:.6g}, "
-                f"fit time = {self.fit_time:.3g} s, success = {self.success}"
-                + (f"\n  message: {self.message}" if self.message else ""))
-
-    def __repr__(self):
-        return f"ModelFit(model={self.model!r}, rmse={self.rmse:.4g}, success={self.success})"
+    n = int(e.size)
+    rss = float(e @ e)
+    aic, bic = information_criteria(rss, n, n_parameters)
+    return FitResult(model=model, rmse=float(np.sqrt(rss / n)), n_parameters=n_parameters, n_train=n,
+                     aic=aic, bic=bic, fit_time=time.perf_counter() - t0, success=success,
+                     message=message, residuals=e, param_names=list(names),
+                     param_values=np.asarray(values, dtype=np.float64), covariance=covariance)
 
 
 def _plane_solve(G, b, yy, wsum, regularization, solver):
@@ -189,9 +137,11 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
     mu[ci, cj] = theta[:K]
     model = cls(input_range, mu, float(theta[K]))
     e = yv - model.simulate(x)
-    return ModelFit(model=model, rmse=float(np.sqrt(np.mean(e * e))), n_parameters=K + 1,
-                    fit_time=time.perf_counter() - t0, success=status in ("optimal", "optimal_inaccurate"),
-                    message="" if status == "optimal" else f"cvxpy status {status}", residuals=e)
+    # cells by their (row, column) in the Preisach plane; no covariance (a
+    # ridge-penalised, mostly bound-constrained problem of hundreds of cells)
+    names = [f"mu[{i},{j}]" for i, j in zip(ci, cj)] + ["offset"]
+    return _model_fit(model, e, K + 1, t0, status in ("optimal", "optimal_inaccurate"),
+                      "" if status == "optimal" else f"cvxpy status {status}", names, theta[:K + 1])
 
 
 def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progress=False):
@@ -325,9 +275,17 @@ def _nonlinear_fit(make, x0, bounds, v, y, gain, max_nfev, n_linear):
     m, g, o, w = inner(best.x)
     model = make(best.x, g, o)
     e = yv - model.simulate(x)
-    return ModelFit(model=model, rmse=float(np.sqrt(np.mean(e * e))), n_parameters=len(best.x) + n_linear,
-                    fit_time=time.perf_counter() - t0, success=bool(best.success), message=best.message,
-                    residuals=e, params=best.x)
+    # the shape parameters' covariance from the Jacobian least_squares
+    # returns (of the variable-projection residual, in units of `scale`);
+    # the linear gain and offset solved inside get none (NaN)
+    k = len(best.x)
+    J = np.asarray(best.jac, dtype=np.float64)
+    s2 = 2.0 * float(best.cost) / max(x.size - k - n_linear, 1)
+    cov = np.full((k + n_linear, k + n_linear), np.nan)
+    cov[:k, :k] = s2 * np.linalg.pinv(J.T @ J, hermitian=True)
+    names = [f"shape[{i}]" for i in range(k)] + (["gain"] if n_linear == 2 else []) + ["offset"]
+    values = list(best.x) + ([g] if n_linear == 2 else []) + [o]
+    return _model_fit(model, e, k + n_linear, t0, bool(best.success), best.message, names, values, cov)
 
 
 def _loop_scales(v, y):

@@ -183,11 +183,66 @@ class _Problem:
                 f"{self.solver}{': ' + err if err else ''})"
             )
         x = np.where(free, x, 0.0)
+        # kept for covariance() (the Gram matrix and the constraints at the optimum)
+        self._last = dict(x=x, Gs=Gs, s=s, sigma=sigma, wsum=wsum, C=C, lb=lb, M=M, free=free)
         theta = sigma * x / s
         # training MSE from the Gram form (exact up to rounding)
         mse = max(float(x @ Gs @ x - 2 * bs @ x) * sigma ** 2 + yy / wsum, 0.0)
         cond = float(np.linalg.cond(Gs[np.ix_(free, free)]))
         return theta, status, mse, cond
+
+
+    def covariance(self, rss_w, n_train, n_free, tol=1e-7):
+        """Covariance of the last solution's coefficients (unscaled units):
+        ``s^2 (A^T W A)^-1`` with ``s^2 = RSS_w / (n - k)``, restricted to the
+        face of the active constraints (a weight at its bound, a partial sum
+        of an invertible model at its bound, an unreached threshold: those
+        directions have zero variance); with a penalty, the sandwich
+        ``H^-1 G H^-1`` (H = G + lam M^T M).
+
+        Parameters
+        ----------
+        rss_w : float
+            Weighted training residual sum of squares.
+        n_train : int
+            Training samples (non-zero weight).
+        n_free : int
+            Free parameters (degrees of freedom ``n_train - n_free``).
+        tol : float
+            A constraint is active when its slack is below `tol` (scaled units,
+            where the coefficients are of order 1).
+
+        Returns
+        -------
+        ndarray, shape (m, m)
+        """
+        from scipy.linalg import null_space
+
+        last = self._last
+        x, Gs, s, sigma, C, lb = last["x"], last["Gs"], last["s"], last["sigma"], last["C"], last["lb"]
+        m = x.size
+        rows = [C[(C @ x - lb) <= tol]]
+        fixed = np.flatnonzero(~last["free"])
+        if fixed.size:
+            E = np.zeros((fixed.size, m))
+            E[np.arange(fixed.size), fixed] = 1.0
+            rows.append(E)
+        A = np.vstack(rows)
+        Z = null_space(A) if A.shape[0] else np.eye(m)
+        cov = np.zeros((m, m))
+        if Z.shape[1]:
+            Gz = Z.T @ Gs @ Z
+            if last["M"] is not None and self.lam > 0:
+                Hz = Gz + self.lam * (last["M"] @ Z).T @ (last["M"] @ Z)
+                Hi = np.linalg.pinv(Hz, hermitian=True)
+                inner = Hi @ Gz @ Hi
+            else:
+                inner = np.linalg.pinv(Gz, hermitian=True)
+            cov = Z @ inner @ Z.T
+        s2 = float(rss_w) / max(int(n_train) - int(n_free), 1)
+        # x = s theta / sigma and A^T W A = wsum diag(s) Gs diag(s)
+        scale = 1.0 / s
+        return s2 / last["wsum"] * cov * np.outer(scale, scale)
 
 
 # ----------------------------------------------------------------------------

@@ -9,8 +9,9 @@ from .._validation import as_scalar, as_thresholds, check_choice, check_simulate
 from ..envelopes import Atanh, Custom, Envelope, Identity, Linear, Polynomial, Tanh
 from ..inverses import tracking_error
 from ..models import GPI, MGPI, PI
-from ._records import _records, _apply_validation
+from ._records import _apply_validation, _frame_arguments, _records, _with_index
 from ._regressors import _SymmetricRegressors, _AsymmetricRegressors, _GPIRegressors, _gram
+from ._result import FitResult, information_criteria
 from .solver import _Problem
 
 # ----------------------------------------------------------------------------
@@ -26,109 +27,16 @@ class ValidationResult(dict):
                 "max_percent={max_percent:.4g}%, n={n})").format(**self)
 
 
-class FitResult:
-    """Outcome of :func:`fit_weights`.
-
-    Attributes
-    ----------
-    model : PI, MGPI or GPI
-        The identified model (without the offset).
-    weights, p0, offset : ndarray, float, float
-        The identified parameters; predictions are ``model.simulate(v) + offset``.
-        For a GPI fit ``p0`` is the coefficient of H (0 without H).
-    envelope, envelope_left, envelope_right, H
-        The envelopes used (``envelope`` None when gl != gr); H the fitted
-        memoryless term of a GPI model.
-    thresholds : ndarray
-    rmse : float
-        RMS of the residuals over the training samples (unweighted).
-    residuals : ndarray or list of ndarray
-        ``y - prediction`` for every sample (one array per record).
-    aic, bic : float
-        ``n ln(RSS/n) + 2k`` and ``n ln(RSS/n) + k ln n`` (n training
-        samples, k free parameters).
-    condition : float
-        Condition number of the column-equilibrated Gram matrix (free columns).
-    unreached : ndarray
-        Thresholds whose play never moved over the training samples (weights
-        fixed to 0).
-    validation : ValidationResult or None
-        Errors on the held-out samples.
-    success, message, status : bool, str, str
-        Solver outcome.
-
-    Examples
-    --------
-    >>> import numpy as np
-    >>> from hystcomp import PI
-    >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
-    >>> y = PI([1.0, 2.0], [0.5, 0.2], p0=1.0).simulate(v) + 0.1
-    >>> res = fit_weights(v, y, thresholds=[1.0, 2.0], model="pi")
-    >>> np.round(res.weights, 4).tolist(), round(res.offset, 4), bool(res.rmse < 1e-6)
-    ([0.5, 0.2], 0.1, True)
-    >>> print(res.report().splitlines()[0])
-    PI fit: 2 operators, 3000 training samples
-    """
-
-    def __init__(self, **kw):
-        self.__dict__.update(kw)
-
-    def predict(self, v, initial_state=None):
-        """Model output plus offset for an input record.
-
-        Parameters
-        ----------
-        v : array_like, shape (n_samples,)
-            Input record.
-        initial_state : ndarray, optional
-            State of the model at the first sample (default: its virgin
-            state, ``model.default_state()``).
-
-        Returns
-        -------
-        ndarray, shape (n_samples,)
-            ``model.simulate(v) + offset``.
-
-        Examples
-        --------
-        >>> import numpy as np
-        >>> from hystcomp import PI
-        >>> v = 3 * np.sin(np.linspace(0, 20, 3000))
-        >>> true = PI([1.0, 2.0], [0.5, 0.2], p0=1.0)
-        >>> res = fit_weights(v, true.simulate(v) + 0.1, thresholds=[1.0, 2.0], model="pi")
-        >>> bool(np.allclose(res.predict(v[:50]), true.simulate(v[:50]) + 0.1, atol=1e-6))
-        True
-        """
-        return self.model.simulate(v, initial_state=initial_state) + self.offset
-
-    def report(self):
-        """A readable summary (str)."""
-        lines = [
-            f"{type(self.model).__name__} fit: {self.thresholds.size} operators, "
-            f"{self.n_train} training samples",
-            f"  solver: {self.solver} status={self.status} success={self.success}",
-            f"  p0 = {self.p0:.6g}, offset = {self.offset:.6g}",
-            f"  weights = {np.array2string(self.weights, precision=4, max_line_width=100)}",
-            f"  rmse = {self.rmse:.6g}  aic = {self.aic:.6g}  bic = {self.bic:.6g}  "
-            f"condition = {self.condition:.3g}",
-        ]
-        if getattr(self, "envelope", None) is not None and not isinstance(self.envelope, Identity):
-            lines.insert(1, f"  envelope: {self.envelope!r}")
-        if self.unreached.size:
-            lines.append(f"  unreached thresholds (weights fixed to 0): {self.unreached.tolist()}")
-        if self.validation is not None:
-            val = self.validation
-            lines.append(
-                f"  validation: rms = {val['rms']:.6g} ({val['rms_percent']:.4g} % of span), "
-                f"max = {val['max']:.6g} ({val['max_percent']:.4g} %), n = {val['n']}"
-            )
-        if self.message:
-            lines.append(f"  message: {self.message}")
-        return "\n".join(lines)
-
-    def __repr__(self):
-        return (f"FitResult(model={self.model!r}, rmse={self.rmse:.4g}, "
-                f"success={self.success})")
+def _attach_index(result, index):
+    """Residuals as pandas Series on the input's index (one per record)."""
+    result.index = index
+    if index is None:
+        return result
+    if isinstance(result.residuals, list):
+        result.residuals = [_with_index(e, i, "residual") for e, i in zip(result.residuals, index)]
+    else:
+        result.residuals = _with_index(result.residuals, index, "residual")
+    return result
 
 
 def _default_thresholds(recs, n=20):
@@ -211,10 +119,10 @@ def _scaled(env, c):
 
 
 
-def fit_weights(v, y, thresholds=None, envelope=None, model="mgpi", constraints="nonnegative",
+def fit_weights(v, y=None, thresholds=None, envelope=None, model="mgpi", constraints="nonnegative",
                 regularization=None, offset=True, solver=None, sample_weight=None, validation=None,
                 n_thresholds=20, envelope_left=None, envelope_right=None, H=None,
-                _problem=None, _warn=True):
+                _problem=None, _warn=True, *, input="v", output="y"):
     """Identify the weights of a PI, mGPI or GPI model by constrained least squares.
 
     Solves ``min sum_k w_k (y_k - yhat_k)^2`` (plus an optional penalty) over
@@ -226,7 +134,10 @@ def fit_weights(v, y, thresholds=None, envelope=None, model="mgpi", constraints=
     ----------
     v, y : array_like or list of array_like
         Input and measured output; a list gives several records, each
-        starting from the virgin state (operator outputs 0).
+        starting from the virgin state (operator outputs 0).  pandas
+        Series keep their index in ``residuals``.  A DataFrame (or a list
+        of them) as `v` is the record itself, its columns named by `input`
+        and `output` (then `y` is not given).
     thresholds : array_like, optional
         r_1 < ... < r_N; default `n_thresholds` equally spaced in
         (0, (max v - min v)/2).
@@ -270,6 +181,8 @@ def fit_weights(v, y, thresholds=None, envelope=None, model="mgpi", constraints=
         through them) or separate records.  Reported in ``result.validation``.
     n_thresholds : int
         Number of default thresholds.
+    input, output : str
+        With a DataFrame `v`: the input and measured-output columns.
 
     Returns
     -------
@@ -305,6 +218,7 @@ def fit_weights(v, y, thresholds=None, envelope=None, model="mgpi", constraints=
     """
     check_choice(model, "model", ("mgpi", "pi", "gpi"))
     reg_kind, gl, gr = _resolve_envelopes(model, envelope, envelope_left, envelope_right, H)
+    v, y, index = _frame_arguments(v, y, input, output)
     recs, multi = _records(v, y, sample_weight)
     masks, val_records = _apply_validation(recs, validation, multi)
     if thresholds is None:
@@ -370,24 +284,29 @@ def fit_weights(v, y, thresholds=None, envelope=None, model="mgpi", constraints=
     envelope = gl if reg_kind == "sym" else None
     # residuals over every sample (model simulation from the virgin state)
     residuals = [rec[1] - (mdl.simulate(rec[0]) + off) for rec in recs]
-    rss = 0.0
+    rss = rss_w = 0.0
     for rec, e in zip(recs, residuals):
         keep = rec[2] > 0 if rec[2] is not None else slice(None)
         rss += float(np.sum(e[keep] ** 2))
+        rss_w += float(np.sum(e * e * rec[2])) if rec[2] is not None else float(np.sum(e * e))
     n = n_train
     k = r.size + lead + int(offset) - int(unreached.sum())
     rmse = math.sqrt(rss / n)
-    ll = n * math.log(max(rss / n, np.finfo(float).tiny))
+    aic, bic = information_criteria(rss, n, k)
+    names = (["p0"] if lead else []) + [f"p{i + 1}" for i in range(r.size)] + (["offset"] if offset else [])
+    cov = prob.covariance(rss_w, n, k)
     success = status == "optimal"
     message = "" if success else f"cvxpy status {status!r}"
     result = FitResult(
         model=mdl, weights=p, p0=p0, offset=off, thresholds=r, envelope=envelope,
         envelope_left=gl, envelope_right=gr, H=H_fit,
         rmse=rmse, residuals=residuals if multi else residuals[0],
-        aic=ll + 2 * k, bic=ll + k * math.log(n), condition=cond, n_train=n, n_parameters=k,
+        aic=aic, bic=bic, condition=cond, n_train=n, n_parameters=k,
+        param_names=names, param_values=np.asarray(theta, dtype=np.float64).copy(), covariance=cov,
         unreached=r[unreached], success=success, status=status, message=message,
-        solver=prob.solver, train_mse=mse, validation=None,
+        solver=prob.solver, train_mse=mse, validation=None, index=index,
     )
+    _attach_index(result, index)
     if masks is not None:
         e = np.concatenate([res[m] for res, m in zip(residuals, masks)])
         yv = np.concatenate([rec[1][m] for rec, m in zip(recs, masks)])
