@@ -2,7 +2,7 @@
 
 Notation and equation numbers follow W. Ye, *Inverse Compensation of
 Hysteresis using Modified Generalized Prandtl-Ishlinskii Hysteresis Model*
-(master's thesis; ``shared/seed/mgpi-thesis.txt``):
+(master's thesis; its typos, corrected here, are listed in the docs' concepts page):
 
 * PI, eq. 18: ``w = p0 v + sum_i p_i F_{r_i}[v]`` with the play F_r of eq. 12-13;
 * GPI, eq. 21: ``w = H(v) + sum_i p_i F^gamma_{l r_i}[v]`` with the generalized
