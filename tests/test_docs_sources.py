@@ -10,13 +10,16 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 PAGES = sorted(p for p in (ROOT / "docs").rglob("*") if p.suffix in (".md", ".rst")
                and "_build" not in p.parts and "gallery" not in p.parts and "generated" not in p.parts)
 EXAMPLES = sorted((ROOT / "examples").rglob("*.py"))
+# the package's own files: their docstrings become the API pages, their notes ship with the data
+PACKAGE = sorted(p for p in (ROOT / "hystcomp").rglob("*") if p.suffix in (".py", ".md"))
 
 
 def test_pages_found():
     assert len(PAGES) >= 10
 
 
-@pytest.mark.parametrize("path", PAGES + [ROOT / "README.md"] + EXAMPLES, ids=lambda p: p.name)
+@pytest.mark.parametrize("path", PAGES + [ROOT / "README.md"] + EXAMPLES + PACKAGE,
+                         ids=lambda p: str(p.relative_to(ROOT)))
 def test_no_reference_outside_the_repository(path):
     text = path.read_text()
     assert "shared/" not in text and "../shared" not in text, path
