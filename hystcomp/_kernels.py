@@ -39,6 +39,7 @@ Operator families, all of the form ``w <- max(L(v), min(U(v), w))``:
 """
 
 import math
+import types
 
 import numpy as np
 from numba import njit
@@ -52,6 +53,28 @@ INVERSE_OF = 5
 CUSTOM = -1
 
 _INF = np.inf
+
+
+def _specialise(template, name, doc=None, **bindings):
+    """A compiled copy of the plain Python function `template` in which the
+    global names in `bindings` refer to the given objects (other compiled
+    functions).
+
+    One source serves several copies that differ in the functions they call
+    (e.g. the envelope evaluator of a solver), without numba-level inlining
+    (which re-types a kernel at each call site and dominated the first-call
+    compilation time) and without passing functions as arguments (a compiled
+    caller that passes one cannot be cached).  Each copy is its own numba
+    function named `name` (its own on-disk cache entry), compiled on its first
+    call only; it sees the module's globals as they are when it is made.
+    """
+    glb = dict(template.__globals__)
+    glb.update(bindings)
+    func = types.FunctionType(template.__code__, glb, name, template.__defaults__, template.__closure__)
+    func.__qualname__ = name
+    func.__module__ = template.__module__
+    func.__doc__ = doc if doc is not None else template.__doc__
+    return njit(cache=True, nogil=True)(func)
 
 
 # ----------------------------------------------------------------------------
@@ -277,6 +300,45 @@ def _slow_val_der(kind, prm, x):
     return env_value(kind, prm, x), env_derivative(kind, prm, x)
 
 
+@njit(cache=True, nogil=True, inline="always")
+def _v_closed(kind, prm, a, b, c, x):
+    """g(x) of a built-in closed-form envelope; NaN for the others."""
+    return _fval(kind, prm, a, b, c, x, False)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _v_general(kind, prm, a, b, c, x):
+    """g(x) of any compiled envelope."""
+    return _fval(kind, prm, a, b, c, x, True)
+
+
+# Envelope evaluators bound into the specialised copies of the kernels (see
+# `_specialise` and the end of this module): `_v_*` give g(x), `_vd_*`
+# (g(x), g'(x)), with the same operations as `_fval` / `_fval_der`
+# (bit-identical results).  Each copy compiles only the envelope code of its
+# class; the evaluators are small and inlined by numba where they run per
+# operator (LLVM alone leaves the tanh paths ~30-50 % slower), while the big
+# kernel bodies are no longer inlined into one another (re-typing them at
+# every call site dominated the first-call compilation time).
+@njit(cache=True, nogil=True, inline="always")
+def _vd_identity(kind, prm, a, b, c, x):
+    """(g(x), g'(x)) of the identity envelope (PI)."""
+    return x, 1.0
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _vd_closed(kind, prm, a, b, c, x):
+    """(g(x), g'(x)) of a built-in closed-form envelope (Identity, Linear,
+    Tanh, Atanh); NaN for the others."""
+    return _fval_der(kind, prm, a, b, c, x, False)
+
+
+@njit(cache=True, nogil=True, inline="always")
+def _vd_general(kind, prm, a, b, c, x):
+    """(g(x), g'(x)) of any compiled envelope."""
+    return _fval_der(kind, prm, a, b, c, x, True)
+
+
 # ----------------------------------------------------------------------------
 # forward kernels
 # ----------------------------------------------------------------------------
@@ -309,18 +371,6 @@ def pi_sum(v, r, p, p0, z, scale, out):
             z[i] = zi
             s += p[i] * zi
         out[k] = scale * (p0 * x + s)
-
-
-@njit(cache=True, nogil=True)
-def play_sum_closed(v, r, p, p0, z, kind, prm, out):
-    """`play_sum` for the built-in closed-form envelopes (Tanh, Atanh)."""
-    _play_sum_env(v, r, p, p0, z, kind, prm, out, False)
-
-
-@njit(cache=True, nogil=True)
-def play_sum_general(v, r, p, p0, z, kind, prm, out):
-    """`play_sum` for any compiled envelope (Polynomial, Inverse, ...)."""
-    _play_sum_env(v, r, p, p0, z, kind, prm, out, True)
 
 
 def play_sum_kernel(kind):
@@ -363,16 +413,16 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
         play_sum_general(v, r, p, p0, z, kind, prm, out)
 
 
-@njit(cache=True, nogil=True, inline="always")
-def _play_sum_env(v, r, p, p0, z, kind, prm, out, gen):
+def _play_sum_template(v, r, p, p0, z, kind, prm, out):
     """`play_sum` with an envelope: g = gamma(z) is kept per operator and
-    re-evaluated only for the operators that move."""
+    re-evaluated only for the operators that move.  `_v` (inlined) and
+    `_v_call` (a call) evaluate the envelope (see the copies at the end)."""
     n = v.size
     N = r.size
     a, b, c = _prm3(prm)
     g = np.empty(N)
     for i in range(N):
-        g[i] = _fval(kind, prm, a, b, c, z[i], gen)
+        g[i] = _v_call(kind, prm, a, b, c, z[i])
     for k in range(n):
         x = v[k]
         s = 0.0
@@ -382,12 +432,12 @@ def _play_sum_env(v, r, p, p0, z, kind, prm, out, gen):
             hi = x + r[i]
             if zi < lo:
                 z[i] = lo
-                g[i] = _fval(kind, prm, a, b, c, lo, gen)
+                g[i] = _v(kind, prm, a, b, c, lo)
             elif zi > hi:
                 z[i] = hi
-                g[i] = _fval(kind, prm, a, b, c, hi, gen)
+                g[i] = _v(kind, prm, a, b, c, hi)
             s += p[i] * g[i]
-        out[k] = p0 * _fval(kind, prm, a, b, c, x, gen) + s
+        out[k] = p0 * _v(kind, prm, a, b, c, x) + s
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -472,17 +522,39 @@ def _fmplay(x, ri, wi, kl, pl, al, bl, cl, kr, pr, ar, br, cr, gen):
 
 
 @njit(cache=True, nogil=True)
+def mplay_sum_closed(v, r, p, w, kl, pl, kr, pr, out):
+    """`mplay_sum` for the built-in closed-form envelopes (Identity, Linear,
+    Tanh, Atanh on both sides)."""
+    _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, False)
+
+
+@njit(cache=True, nogil=True)
+def mplay_sum_general(v, r, p, w, kl, pl, kr, pr, out):
+    """`mplay_sum` for any compiled envelopes."""
+    _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, True)
+
+
+def mplay_sum_kernel(kl, kr):
+    """The compiled kernel `mplay_sum` uses for envelope kinds (kl, kr),
+    chosen in Python so that a call compiles only that one."""
+    if IDENTITY <= kl <= ATANH and IDENTITY <= kr <= ATANH:
+        return mplay_sum_closed
+    return mplay_sum_general
+
+
+@njit(cache=True, nogil=True)
 def mplay_sum(v, r, p, w, kl, pl, kr, pr, out):
     """Modified generalized plays with two envelopes (eq. 23).
 
     ``w_i <- max(gl(v - r_i), min(gr(v + r_i), w_i))``; `r` includes the
-    r = 0 operator of p0 (eq. 25).  ``out = sum_i p_i w_i``.
+    r = 0 operator of p0 (eq. 25).  ``out = sum_i p_i w_i``.  Compiled code
+    calls this (both copies compiled on first use); Python callers use
+    `mplay_sum_kernel`, which compiles only the copy the envelopes need.
     """
-    # two compiled copies: built-in closed forms and the rest (see play_sum)
     if IDENTITY <= kl <= ATANH and IDENTITY <= kr <= ATANH:
-        _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, False)
+        mplay_sum_closed(v, r, p, w, kl, pl, kr, pr, out)
     else:
-        _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, True)
+        mplay_sum_general(v, r, p, w, kl, pl, kr, pr, out)
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -590,18 +662,11 @@ def _val_der(kind, prm, x):
 
 
 @njit(cache=True, nogil=True)
-def _val_der_closed(kind, prm, x):
-    # _val_der for the built-in closed forms only (Identity, Linear, Tanh, Atanh)
-    a, b, c = _prm3(prm)
-    return _fval_der(kind, prm, a, b, c, x, False)
-
-
-@njit(cache=True, nogil=True)
 def _output_and_slopes(fam, x, xprev, r, p, p0, state,
                        kl, pl, kr, pr, kh, ph, hscale):
     """Model output for a new input x from the current state, with the
     right and left derivatives (the state is not changed).  Families
-    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: `_play_eval`)."""
+    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: `_play_eval_template`)."""
     N = r.size
     y = 0.0
     sr = 0.0
@@ -667,7 +732,7 @@ def _output_and_slopes(fam, x, xprev, r, p, p0, state,
 @njit(cache=True, nogil=True)
 def _advance(fam, x, xprev, r, state, kl, pl, kr, pr):
     """Update the state for the new input x (the forward step); families
-    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: in `_play_solve_body`)."""
+    FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: in `_play_solve_template`)."""
     N = r.size
     if fam == FAM_MPLAY:
         al, bl, cl = _prm3(pl)
@@ -729,15 +794,15 @@ def _shrink(f, x, lo, hi, xmin, xmax):
     return lo, hi, hi - lo <= 1e-15 * (1.0 + abs(x))
 
 
-@njit(cache=True, nogil=True, inline="always")
-def _play_eval(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen):
+def _play_eval_template(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a, b, c):
     """Output and one-sided slopes of a PI / symmetric mGPI for a new input x.
 
     ``y = p0 g(x) + sum_i p_i g(clamp(z_i, x - r_i, x + r_i))``; the right
     slope sr counts the operators that move when x increases (z_i <= x - r_i
     or z_i > x + r_i), the left slope sl those that move when it decreases
     (z_i < x - r_i or z_i >= x + r_i).  g0, dg0 = g(x), g'(x) are given.  The
-    envelope is evaluated only for operators that move strictly; one sitting
+    envelope (`_vd`, one of the `_vd_*` evaluators) is evaluated only for
+    operators that move strictly; one sitting
     on a boundary (z_i == x -+ r_i, e.g. all of them at the previous input)
     reuses its cached value and slope (cache = g(z), dcache = g'(z)).  The
     values of the moving operators are left in sv, sd for the state update.
@@ -750,7 +815,7 @@ def _play_eval(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a,
         lo = x - r[i]
         hi = x + r[i]
         if zi < lo or zi > hi:
-            gi, di = _fval_der(kind, prm, a, b, c, lo if zi < lo else hi, gen)
+            gi, di = _vd(kind, prm, a, b, c, lo if zi < lo else hi)
             sv[i] = gi
             sd[i] = di
             y += p[i] * gi
@@ -766,26 +831,6 @@ def _play_eval(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a,
 
 
 @njit(cache=True, nogil=True)
-def play_solve_pi(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
-    """`inverse_solve` for FAM_PLAY with the PI (constant kind: no envelope
-    dispatch left in the loops; ~1.7x faster than the generic copy)."""
-    return _play_solve_body(u, r, p, p0, state, xprev, IDENTITY, prm, xmin, xmax, rtol, out, info, False)
-
-
-@njit(cache=True, nogil=True)
-def play_solve_closed(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
-    """`inverse_solve` for FAM_PLAY with Linear, Tanh or Atanh (no general
-    fallback call in the loops; ~3x faster than the generic copy)."""
-    return _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, False)
-
-
-@njit(cache=True, nogil=True)
-def play_solve_general(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
-    """`inverse_solve` for FAM_PLAY with any compiled envelope."""
-    return _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, True)
-
-
-@njit(cache=True, nogil=True)
 def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
     """`inverse_solve` for FAM_PLAY: three compiled copies, one per kind class
     (each is compiled on first use only; Python callers pick one through
@@ -797,8 +842,7 @@ def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, inf
     return play_solve_general(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
 
 
-@njit(cache=True, nogil=True, inline="always")
-def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info, gen):
+def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
     """`inverse_solve` for FAM_PLAY (PI and symmetric mGPI).
 
     The same iteration as the general solver, with less work per sample:
@@ -814,16 +858,10 @@ def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out
     dcache = np.empty(N)
     sv = np.empty(N)
     sd = np.empty(N)
-    # once per call: not worth inlined copies; the closed-form copy keeps the
-    # general envelope code (Polynomial, Inverse) out of the compiled kernel
-    if gen:
-        for i in range(N):
-            cache[i], dcache[i] = _val_der(kind, prm, state[i])
-        gx, dgx = _val_der(kind, prm, xprev)
-    else:
-        for i in range(N):
-            cache[i], dcache[i] = _val_der_closed(kind, prm, state[i])
-        gx, dgx = _val_der_closed(kind, prm, xprev)
+    # once per call (a call, not inlined: less to compile)
+    for i in range(N):
+        cache[i], dcache[i] = _vd_call(kind, prm, a, b, c, state[i])
+    gx, dgx = _vd_call(kind, prm, a, b, c, xprev)
     # output and one-sided slopes at the starting point (the previous input),
     # carried over from the state update of the previous sample
     y0 = 0.0
@@ -840,7 +878,7 @@ def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out
             y, sr, sl = y0, sr0, sl0
         else:
             # the initial state need not sit inside the boundaries at xprev
-            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen)
+            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c)
         f = y - target
         if f < 0.0:
             lo = x
@@ -853,8 +891,8 @@ def _play_solve_body(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out
         while abs(f) > tol and it < 200:
             it += 1
             x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
-            gx, dgx = _fval_der(kind, prm, a, b, c, x, gen)
-            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c, gen)
+            gx, dgx = _vd(kind, prm, a, b, c, x)
+            y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c)
             f = y - target
             lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax)
             if stop:
@@ -983,3 +1021,37 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
     info[1] = first
     info[2] = max_it
     return xprev
+
+
+# ----------------------------------------------------------------------------
+# specialised copies (made last: a copy sees the module's globals when it is made)
+# ----------------------------------------------------------------------------
+# The copies of the FAM_PLAY solver, one per envelope class: the same code
+# with `_vd` bound to the class's evaluator, inlined in the Newton loop, and
+# `_vd_call` to the same evaluator as a call (see `_specialise`).
+_vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call")
+_vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
+_play_eval_pi = _specialise(_play_eval_template, "_play_eval_pi", _vd=_vd_identity)
+_play_eval_closed = _specialise(_play_eval_template, "_play_eval_closed", _vd=_vd_closed)
+_play_eval_general = _specialise(_play_eval_template, "_play_eval_general", _vd=_vd_general)
+play_solve_pi = _specialise(
+    _play_solve_template, "play_solve_pi", _vd=_vd_identity, _vd_call=_vd_identity, _play_eval=_play_eval_pi,
+    doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope: no envelope code in the loops).")
+play_solve_closed = _specialise(
+    _play_solve_template, "play_solve_closed", _vd=_vd_closed, _vd_call=_vd_closed_call, _play_eval=_play_eval_closed,
+    doc="`inverse_solve` for FAM_PLAY with Identity, Linear, Tanh or Atanh (no general envelope code "
+        "in the loops; ~3x faster than the general copy).")
+play_solve_general = _specialise(
+    _play_solve_template, "play_solve_general", _vd=_vd_general, _vd_call=_vd_general_call,
+    _play_eval=_play_eval_general,
+    doc="`inverse_solve` for FAM_PLAY with any compiled envelope.")
+
+# The copies of the enveloped forward sum (same scheme).
+_v_closed_call = _specialise(_v_closed.py_func, "_v_closed_call")
+_v_general_call = _specialise(_v_general.py_func, "_v_general_call")
+play_sum_closed = _specialise(
+    _play_sum_template, "play_sum_closed", _v=_v_closed, _v_call=_v_closed_call,
+    doc="`play_sum` for the built-in closed-form envelopes (Tanh, Atanh).")
+play_sum_general = _specialise(
+    _play_sum_template, "play_sum_general", _v=_v_general, _v_call=_v_general_call,
+    doc="`play_sum` for any compiled envelope (Polynomial, Inverse, ...).")
