@@ -300,13 +300,13 @@ def _slow_val_der(kind, prm, x):
     return env_value(kind, prm, x), env_derivative(kind, prm, x)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, nogil=True)
 def _v_closed(kind, prm, a, b, c, x):
     """g(x) of a built-in closed-form envelope; NaN for the others."""
     return _fval(kind, prm, a, b, c, x, False)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, nogil=True)
 def _v_general(kind, prm, a, b, c, x):
     """g(x) of any compiled envelope."""
     return _fval(kind, prm, a, b, c, x, True)
@@ -316,10 +316,12 @@ def _v_general(kind, prm, a, b, c, x):
 # `_specialise` and the end of this module): `_v_*` give g(x), `_vd_*`
 # (g(x), g'(x)), with the same operations as `_fval` / `_fval_der`
 # (bit-identical results).  Each copy compiles only the envelope code of its
-# class; the evaluators are small and inlined by numba where they run per
-# operator (LLVM alone leaves the tanh paths ~30-50 % slower), while the big
-# kernel bodies are no longer inlined into one another (re-typing them at
-# every call site dominated the first-call compilation time).
+# class, and the big kernel bodies are no longer inlined into one another by
+# numba (re-typing them at every call site dominated the first-call
+# compilation time).  The forward sums call `_v_*` (LLVM inlines them: same
+# speed, half the compilation time of numba-level inlining); the solvers
+# inline `_vd_*` in numba where they run per operator (as calls, the tanh
+# inverse ran 1.5x slower).
 @njit(cache=True, nogil=True, inline="always")
 def _vd_identity(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of the identity envelope (PI)."""
@@ -415,14 +417,14 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
 
 def _play_sum_template(v, r, p, p0, z, kind, prm, out):
     """`play_sum` with an envelope: g = gamma(z) is kept per operator and
-    re-evaluated only for the operators that move.  `_v` (inlined) and
-    `_v_call` (a call) evaluate the envelope (see the copies at the end)."""
+    re-evaluated only for the operators that move.  `_v` evaluates the
+    envelope (see the copies at the end of the module)."""
     n = v.size
     N = r.size
     a, b, c = _prm3(prm)
     g = np.empty(N)
     for i in range(N):
-        g[i] = _v_call(kind, prm, a, b, c, z[i])
+        g[i] = _v(kind, prm, a, b, c, z[i])
     for k in range(n):
         x = v[k]
         s = 0.0
@@ -858,10 +860,9 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
     dcache = np.empty(N)
     sv = np.empty(N)
     sd = np.empty(N)
-    # once per call (a call, not inlined: less to compile)
     for i in range(N):
-        cache[i], dcache[i] = _vd_call(kind, prm, a, b, c, state[i])
-    gx, dgx = _vd_call(kind, prm, a, b, c, xprev)
+        cache[i], dcache[i] = _vd(kind, prm, a, b, c, state[i])
+    gx, dgx = _vd(kind, prm, a, b, c, xprev)
     # output and one-sided slopes at the starting point (the previous input),
     # carried over from the state update of the previous sample
     y0 = 0.0
@@ -1027,31 +1028,29 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
 # specialised copies (made last: a copy sees the module's globals when it is made)
 # ----------------------------------------------------------------------------
 # The copies of the FAM_PLAY solver, one per envelope class: the same code
-# with `_vd` bound to the class's evaluator, inlined in the Newton loop, and
-# `_vd_call` to the same evaluator as a call (see `_specialise`).
+# with `_vd` bound to the class's evaluator: inlined by numba in the loop over
+# operators (`_play_eval_*`), a call in the solver itself (once per Newton
+# iteration: inlining it there doubled the compilation time for no speed).
 _vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call")
 _vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
 _play_eval_pi = _specialise(_play_eval_template, "_play_eval_pi", _vd=_vd_identity)
 _play_eval_closed = _specialise(_play_eval_template, "_play_eval_closed", _vd=_vd_closed)
 _play_eval_general = _specialise(_play_eval_template, "_play_eval_general", _vd=_vd_general)
 play_solve_pi = _specialise(
-    _play_solve_template, "play_solve_pi", _vd=_vd_identity, _vd_call=_vd_identity, _play_eval=_play_eval_pi,
+    _play_solve_template, "play_solve_pi", _vd=_vd_identity, _play_eval=_play_eval_pi,
     doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope: no envelope code in the loops).")
 play_solve_closed = _specialise(
-    _play_solve_template, "play_solve_closed", _vd=_vd_closed, _vd_call=_vd_closed_call, _play_eval=_play_eval_closed,
+    _play_solve_template, "play_solve_closed", _vd=_vd_closed_call, _play_eval=_play_eval_closed,
     doc="`inverse_solve` for FAM_PLAY with Identity, Linear, Tanh or Atanh (no general envelope code "
         "in the loops; ~3x faster than the general copy).")
 play_solve_general = _specialise(
-    _play_solve_template, "play_solve_general", _vd=_vd_general, _vd_call=_vd_general_call,
-    _play_eval=_play_eval_general,
+    _play_solve_template, "play_solve_general", _vd=_vd_general_call, _play_eval=_play_eval_general,
     doc="`inverse_solve` for FAM_PLAY with any compiled envelope.")
 
 # The copies of the enveloped forward sum (same scheme).
-_v_closed_call = _specialise(_v_closed.py_func, "_v_closed_call")
-_v_general_call = _specialise(_v_general.py_func, "_v_general_call")
 play_sum_closed = _specialise(
-    _play_sum_template, "play_sum_closed", _v=_v_closed, _v_call=_v_closed_call,
+    _play_sum_template, "play_sum_closed", _v=_v_closed,
     doc="`play_sum` for the built-in closed-form envelopes (Tanh, Atanh).")
 play_sum_general = _specialise(
-    _play_sum_template, "play_sum_general", _v=_v_general, _v_call=_v_general_call,
+    _play_sum_template, "play_sum_general", _v=_v_general,
     doc="`play_sum` for any compiled envelope (Polynomial, Inverse, ...).")
