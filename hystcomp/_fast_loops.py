@@ -154,6 +154,11 @@ def _order(leaves, M, y_off):
     return order
 
 
+# The names `_run_template` calls and each of its compiled copies binds to a
+# step function (see `_run_kernel`); None here.
+_step0 = _step1 = _step2 = None
+
+
 def _run_template(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
                   A, B, C, D, x, h_index, h_slot, h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
                   h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift,

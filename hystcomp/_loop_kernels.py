@@ -201,6 +201,12 @@ def _dot(C, x):
     return s
 
 
+# The names `_run_loop_template` calls and each of its compiled copies binds
+# to a step function (see `loop_kernel`); None here.
+_h_step = None
+_c_step = None
+
+
 def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
              Ap, Bp, Cp, Dp, xp,
              Ac, Bc, Cc, Dc, xc, limited, ulo, uhi, pid_dt,
