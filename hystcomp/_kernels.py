@@ -55,12 +55,12 @@ from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
     _tanh, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
-    _slow_value, _slow_val_der, _v_closed, _v_general, _vd_identity, _vd_closed,
-    _vd_general, _fmplay)
+    _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
+    _vd_general_call, _fmplay)
 from ._kernels_inverse import (  # noqa: F401
     FAM_PLAY, FAM_MPLAY, FAM_GPI, FAM_STOP, _val_der, _output_and_slopes, _advance,
     _newton_point, _shrink, _play_eval_template, _play_solve, _play_solve_template,
-    inverse_solve, inverse_kernel, inverse_solve_other, _vd_closed_call, _vd_general_call,
+    inverse_solve, inverse_kernel, inverse_solve_other,
     _play_eval_pi, _play_eval_closed, _play_eval_general, play_solve_pi,
     play_solve_closed, play_solve_general)
 
@@ -75,7 +75,7 @@ _SUM_FLAGS = {"reassoc", "contract"}
 
 # The name `_play_sum_template` calls and each of its compiled copies binds to
 # an envelope evaluator (see `_specialise` and the end of this module).
-_v = None
+_vd = None
 
 
 @njit(cache=True, nogil=True, fastmath=_SUM_FLAGS)
@@ -144,14 +144,14 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
 
 def _play_sum_template(v, r, p, p0, z, kind, prm, out):
     """`play_sum` with an envelope: g = gamma(z) is kept per operator and
-    re-evaluated only for the operators that move.  `_v` evaluates the
+    re-evaluated only for the operators that move.  `_vd` evaluates the
     envelope (see the copies at the end of the module)."""
     n = v.size
     N = r.size
     a, b, c = _prm3(prm)
     g = np.empty(N)
     for i in range(N):
-        g[i] = _v(kind, prm, a, b, c, z[i])
+        g[i] = _vd(kind, prm, a, b, c, z[i])[0]
     for k in range(n):
         x = v[k]
         s = 0.0
@@ -161,12 +161,12 @@ def _play_sum_template(v, r, p, p0, z, kind, prm, out):
             hi = x + r[i]
             if zi < lo:
                 z[i] = lo
-                g[i] = _v(kind, prm, a, b, c, lo)
+                g[i] = _vd(kind, prm, a, b, c, lo)[0]
             elif zi > hi:
                 z[i] = hi
-                g[i] = _v(kind, prm, a, b, c, hi)
+                g[i] = _vd(kind, prm, a, b, c, hi)[0]
             s += p[i] * g[i]
-        out[k] = p0 * _v(kind, prm, a, b, c, x) + s
+        out[k] = p0 * _vd(kind, prm, a, b, c, x)[0] + s
 
 
 @njit(cache=True, nogil=True, inline="always")
@@ -367,11 +367,11 @@ def stop_sum(v, r, p, p0, w, vprev, out):
 # ----------------------------------------------------------------------------
 # specialised copies (made last: a copy sees the module's globals when it is made)
 # ----------------------------------------------------------------------------
-# The copies of the enveloped forward sum, one per envelope class: `_v` bound
+# The copies of the enveloped forward sum, one per envelope class: `_vd` bound
 # to the class's evaluator, a call (LLVM inlines it; see `_kernels_envelopes`).
 play_sum_closed = _specialise(
-    _play_sum_template, "play_sum_closed", _v=_v_closed,
+    _play_sum_template, "play_sum_closed", _vd=_vd_closed_call,
     doc="`play_sum` for the built-in closed-form envelopes (Tanh, Atanh).")
 play_sum_general = _specialise(
-    _play_sum_template, "play_sum_general", _v=_v_general,
+    _play_sum_template, "play_sum_general", _vd=_vd_general_call,
     doc="`play_sum` for any compiled envelope (Polynomial, Inverse, ...).")

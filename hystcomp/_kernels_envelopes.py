@@ -271,28 +271,16 @@ def _slow_val_der(kind, prm, x):
     return env_value(kind, prm, x), env_derivative(kind, prm, x)
 
 
-@njit(cache=True, nogil=True)
-def _v_closed(kind, prm, a, b, c, x):
-    """g(x) of a built-in closed-form envelope; NaN for the others."""
-    return _fval(kind, prm, a, b, c, x, False)
-
-
-@njit(cache=True, nogil=True)
-def _v_general(kind, prm, a, b, c, x):
-    """g(x) of any compiled envelope."""
-    return _fval(kind, prm, a, b, c, x, True)
-
-
 # Envelope evaluators bound into the specialised copies of the kernels (see
-# `_specialise` and the end of this module): `_v_*` give g(x), `_vd_*`
-# (g(x), g'(x)), with the same operations as `_fval` / `_fval_der`
+# `_specialise`): (g(x), g'(x)) with the same operations as `_fval_der`
 # (bit-identical results).  Each copy compiles only the envelope code of its
 # class, and the big kernel bodies are no longer inlined into one another by
 # numba (re-typing them at every call site dominated the first-call
-# compilation time).  The forward sums call `_v_*` (LLVM inlines them: same
-# speed, half the compilation time of numba-level inlining); the solvers
-# inline `_vd_*` in numba where they run per operator (as calls, the tanh
-# inverse ran 1.5x slower).
+# compilation time).  `_vd_*` are inlined by numba where a solver runs them
+# per operator (as calls, the tanh inverse ran 1.5x slower); `_vd_*_call`
+# (the same, compiled as functions) serve everywhere else: the forward sums
+# (LLVM inlines them and drops the unused derivative: same speed, half the
+# compilation time) and the solvers' once-per-iteration evaluations.
 @njit(cache=True, nogil=True, inline="always")
 def _vd_identity(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of the identity envelope (PI)."""
@@ -310,6 +298,10 @@ def _vd_closed(kind, prm, a, b, c, x):
 def _vd_general(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of any compiled envelope."""
     return _fval_der(kind, prm, a, b, c, x, True)
+
+
+_vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call")
+_vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
 
 
 # ----------------------------------------------------------------------------

@@ -14,7 +14,7 @@ import numpy as np
 from numba import njit
 
 from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fmplay, _fval, _fval_der, _prm3, _specialise,
-                                 _vd_closed, _vd_general, _vd_identity)
+                                 _vd_closed, _vd_closed_call, _vd_general, _vd_general_call, _vd_identity)
 
 # ----------------------------------------------------------------------------
 # exact inverse: per-sample monotone solve
@@ -404,8 +404,6 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
 # with `_vd` bound to the class's evaluator: inlined by numba in the loop over
 # operators (`_play_eval_*`), a call in the solver itself (once per Newton
 # iteration: inlining it there doubled the compilation time for no speed).
-_vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call")
-_vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
 _play_eval_pi = _specialise(_play_eval_template, "_play_eval_pi", _vd=_vd_identity)
 _play_eval_closed = _specialise(_play_eval_template, "_play_eval_closed", _vd=_vd_closed)
 _play_eval_general = _specialise(_play_eval_template, "_play_eval_general", _vd=_vd_general)
