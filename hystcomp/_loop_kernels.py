@@ -246,13 +246,13 @@ def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
             u = u + uc if use_ff else uc
         if use_comp:
             v, c_xprev = _c_step(c_code, c_fam, kcomp * u, c_r, c_p, c_p0, c_kl, c_pl, c_kr, c_pr,
-                                    c_kh, c_ph, c_hs, c_lo, c_hi, c_state, c_xprev, bin_, bout, binfo)
+                                 c_kh, c_ph, c_hs, c_lo, c_hi, c_state, c_xprev, bin_, bout, binfo)
             if c_code == B_EXACT:
                 n_clip += binfo[0]
         else:
             v = u
         w, h_xprev = _h_step(h_code, h_fam, v, h_r, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
-                                h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_xprev, bin_, bout, binfo)
+                             h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_xprev, bin_, bout, binfo)
         y_out[k] = y0 + Dp[0, 0] * w
         w_out[k] = w
         v_out[k] = v
