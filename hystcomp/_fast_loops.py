@@ -15,13 +15,12 @@ gains), hystcomp hysteresis and compensator blocks (:func:`hystcomp.iosys.hyster
 """
 
 import numpy as np
-from numba import njit
 
 import control as ct
 
 from . import _loop_kernels as _lk
 from ._blocks import CompensatorBlock, HysteresisBlock, SaturatedPID, _check_gain
-from ._kernels import FAM_STOP
+from ._kernels import FAM_STOP, _specialise
 from ._block_specs import _spec
 from ._validation import as_signal
 
@@ -155,11 +154,17 @@ def _order(leaves, M, y_off):
     return order
 
 
-@njit(cache=True)
-def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
-         A, B, C, D, x, h_index, h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh,
-         h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out,
-         x_out):
+# The names `_run_template` calls and each of its compiled copies binds to a
+# step function (see `_run_kernel`); None here.
+_step0 = _step1 = _step2 = None
+
+
+def _run_template(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
+                  A, B, C, D, x, h_index, h_slot, h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
+                  h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift,
+                  y_out, x_out):
+    """The compiled interconnection; hystcomp block h runs through the step
+    function bound to `_step<h_slot[h]>` (see `_run_kernel`)."""
     n = r_in.shape[0]
     Y = np.zeros(M.shape[1])
     U = np.zeros(M.shape[0])
@@ -192,10 +197,22 @@ def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
                 h = h_index[j]
                 st = h_state[h, :h_ns[h]]
                 nr = h_nr[h]
-                out, h_xprev[h] = _lk.block_step(
-                    h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
-                    h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
-                    st, h_xprev[h], bin_, bout, binfo)
+                slot = h_slot[h]
+                if slot == 0:
+                    out, h_xprev[h] = _step0(
+                        h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        st, h_xprev[h], bin_, bout, binfo)
+                elif slot == 1:
+                    out, h_xprev[h] = _step1(
+                        h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        st, h_xprev[h], bin_, bout, binfo)
+                else:
+                    out, h_xprev[h] = _step2(
+                        h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        st, h_xprev[h], bin_, bout, binfo)
                 Y[y_off[j]] = h_outgain[h] * out
             else:
                 for a in range(ny[j]):
@@ -264,6 +281,30 @@ def _run(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
                     xn[x_off[j] + a] = s
                 for a in range(nx[j]):
                     x[x_off[j] + a] = xn[x_off[j] + a]
+
+
+_RUNS = {}
+
+
+def _run_kernel(specs):
+    """(compiled interconnection, slot of each hystcomp block) for the blocks'
+    kernel arguments `specs`: a copy of `_run_template` with up to three step
+    functions (one per distinct kernel copy the blocks need, so that the first
+    call compiles only those; `_loop_kernels.block_step`, which compiles every
+    copy, for more).  Copies are kept per combination and cached on disk by
+    numba under their own names."""
+    steps = [_lk.step_kernel(sp[0], sp[1], sp[5], sp[7]) for sp in specs] or [_lk.step_none]
+    distinct = list(dict.fromkeys(steps))
+    if len(distinct) > 3:
+        distinct, slots = [_lk.block_step], [0] * len(steps)
+    else:
+        slots = [distinct.index(st) for st in steps]
+    distinct += [distinct[0]] * (3 - len(distinct))
+    key = tuple(st.__name__ for st in distinct)
+    if key not in _RUNS:
+        _RUNS[key] = _specialise(_run_template, "_run__" + "__".join(key), _step0=distinct[0],
+                                 _step1=distinct[1], _step2=distinct[2])
+    return _RUNS[key], np.array(slots, np.int64)
 
 
 def _split_state(spec, st):
@@ -427,11 +468,12 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
                 pid_dt[j] = leaf.pid_dt
     y_out = np.empty((sys.noutputs, n))
     x_out = np.empty((xo, n))
-    _run(np.ascontiguousarray(u.T), kinds, order, nft, x_off, np.array([lf.nx for lf in leaves], np.int64),
-         u_off, np.array([lf.nu for lf in leaves], np.int64), y_off, np.array([lf.ny for lf in leaves], np.int64),
-         np.ascontiguousarray(M), np.ascontiguousarray(N), np.ascontiguousarray(O), A, B, C, D, x, h_index,
-         h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi, h_state,
-         h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out, x_out)
+    run, h_slot = _run_kernel([leaves[j].spec for j in hyst])
+    run(np.ascontiguousarray(u.T), kinds, order, nft, x_off, np.array([lf.nx for lf in leaves], np.int64),
+        u_off, np.array([lf.nu for lf in leaves], np.int64), y_off, np.array([lf.ny for lf in leaves], np.int64),
+        np.ascontiguousarray(M), np.ascontiguousarray(N), np.ascontiguousarray(O), A, B, C, D, x, h_index, h_slot,
+        h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi, h_state,
+        h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out, x_out)
     return ct.TimeResponseData(t, y_out, x_out, u, output_labels=sys.output_labels,
                                state_labels=sys.state_labels, input_labels=sys.input_labels,
                                sysname=sys.name, issiso=sys.ninputs == 1 and sys.noutputs == 1)

@@ -564,12 +564,12 @@ def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=No
     n = r.size
     y, w, v = np.empty(n), np.empty(n), np.empty(n)
     info_arr = np.zeros(1, dtype=np.int64)
-    _lk.run_loop(r, float(loop.feedforward_gain), use_ff, need_ctrl, need_comp, kcomp,
-                 Ap, Bp, Cp, Dp, xp,
-                 np.ascontiguousarray(Ac, dtype=np.float64), np.ascontiguousarray(Bc, dtype=np.float64),
-                 np.ascontiguousarray(Cc, dtype=np.float64), np.ascontiguousarray(Dc, dtype=np.float64),
-                 xc, limited, float(ulo), float(uhi), float(pid_dt),
-                 *h[:16], *c[:16], y, w, v, info_arr)
+    _lk.loop_kernel(h, c)(r, float(loop.feedforward_gain), use_ff, need_ctrl, need_comp, kcomp,
+                          Ap, Bp, Cp, Dp, xp,
+                          np.ascontiguousarray(Ac, dtype=np.float64), np.ascontiguousarray(Bc, dtype=np.float64),
+                          np.ascontiguousarray(Cc, dtype=np.float64), np.ascontiguousarray(Dc, dtype=np.float64),
+                          xc, limited, float(ulo), float(uhi), float(pid_dt),
+                          *h[:16], *c[:16], y, w, v, info_arr)
     return ct.TimeResponseData(t, np.vstack([y, w, v]), None, r, output_labels=["y", "w", "v"],
                                input_labels=["r"], sysname=loop.name, issiso=False,
                                title=f"Compiled loop {loop.name}")

@@ -512,7 +512,7 @@ class MGPI(HysteresisModel):
         kl, pl = self.envelope_left.kernel_spec()
         kr, pr = self.envelope_right.kernel_spec()
         if kl != _k.CUSTOM and kr != _k.CUSTOM:
-            _k.mplay_sum(x, r_all, p_all, state, kl, pl, kr, pr, y)
+            _k.mplay_sum_kernel(kl, kr)(x, r_all, p_all, state, kl, pl, kr, pr, y)
             return y
         block = np.empty((min(_BLOCK, x.size), r_all.size))
         for s in range(0, x.size, _BLOCK):
