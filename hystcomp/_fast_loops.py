@@ -389,6 +389,9 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
     ...                  rtol=0, atol=1e-12))
     True
     """
+    if not isinstance(sys, ct.InputOutputSystem):
+        raise TypeError(f"Parameter sys is {sys!r} but should be a python-control system (an interconnection "
+                        "built with control.interconnect, or one block)")
     leaves, M, N, O = _flatten(sys)
     t = as_signal(timepts, "timepts")
     n = t.size
@@ -398,9 +401,17 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
         if sysdt in (0, None) or not np.allclose(np.diff(t), sysdt, rtol=1e-9, atol=0):
             raise ValueError(f"Parameter timepts should be uniformly spaced by the system's dt = {sys.dt!r}; "
                              f"got steps from {np.diff(t).min()!r} to {np.diff(t).max()!r}")
-    u = np.asarray(inputs, dtype=np.float64)
-    if u.ndim <= 1:
-        u = np.broadcast_to(u, (n,)).reshape(1, n) if sys.ninputs == 1 else u.reshape(-1, 1) * np.ones((1, n))
+    try:
+        u = np.asarray(inputs, dtype=np.float64)
+    except (TypeError, ValueError):
+        raise TypeError(f"Parameter inputs is {inputs!r} but should hold real numbers, shape "
+                        f"({sys.ninputs}, {n}) (signal x time)") from None
+    if u.ndim == 0:
+        u = np.full((sys.ninputs, n), float(u))
+    elif u.ndim == 1 and sys.ninputs == 1 and u.size in (1, n):
+        u = np.broadcast_to(u, (n,)).reshape(1, n)
+    elif u.ndim == 1 and u.size == sys.ninputs:
+        u = u.reshape(-1, 1) * np.ones((1, n))
     if u.shape != (sys.ninputs, n):
         raise ValueError(f"Parameter inputs has shape {np.shape(inputs)} but should be ({sys.ninputs}, {n}) "
                          "(signal x time)")
