@@ -155,9 +155,21 @@ def _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit):
     return xn, checked_limit
 
 
+@njit(cache=True, nogil=True)
+def _input_scale(r):
+    """The model's input scale: its largest threshold (1 without a positive one)."""
+    xs = 0.0
+    for i in range(r.size):
+        if r[i] > xs:
+            xs = r[i]
+    return xs if xs > 0.0 else 1.0
+
+
 @njit(cache=True, nogil=True, inline="always")
-def _shrink(f, x, lo, hi, xmin, xmax):
-    """Bracket update after evaluating f at x; returns (lo, hi, stop)."""
+def _shrink(f, x, lo, hi, xmin, xmax, xs):
+    """Bracket update after evaluating f at x; returns (lo, hi, stop).  The
+    bracket is narrow enough at ``1e-15 (xs + |x|)``, xs the model's input
+    scale (its largest threshold), so the stop is the same in any units."""
     if f < 0.0:
         lo = x
         if x >= xmax:
@@ -166,7 +178,7 @@ def _shrink(f, x, lo, hi, xmin, xmax):
         hi = x
         if x <= xmin:
             return lo, hi, True
-    return lo, hi, hi - lo <= 1e-15 * (1.0 + abs(x))
+    return lo, hi, hi - lo <= 1e-15 * (xs + abs(x))
 
 
 def _play_eval_template(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind, prm, a, b, c):
@@ -244,6 +256,7 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
     n_clip = 0
     first = -1
     max_it = 0
+    xs = _input_scale(r)
     for k in range(u.size):
         target = u[k]
         tol = rtol * (1.0 + abs(target))
@@ -268,7 +281,7 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
             gx, dgx = _vd(kind, prm, a, b, c, x)
             y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c)
             f = y - target
-            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax)
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
             if stop:
                 break
         if abs(f) > tol and (x >= xmax or x <= xmin):
@@ -358,6 +371,7 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
     n_clip = 0
     first = -1
     max_it = 0
+    xs = _input_scale(r)
     for k in range(u.size):
         target = u[k]
         tol = rtol * (1.0 + abs(target))
@@ -379,7 +393,7 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
             y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state,
                                            kl, pl, kr, pr, kh, ph, hscale)
             f = y - target
-            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax)
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
             if stop:
                 break
         if abs(f) > tol and (x >= xmax or x <= xmin):

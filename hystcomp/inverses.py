@@ -289,6 +289,24 @@ class ExactInverse:
         """[last input 0, the model's virgin state]."""
         return np.concatenate([[0.0], self.model.default_state()])
 
+    def _output_rtol(self):
+        """Relative output tolerance of the solve: 1e-14 of ``(1 + |target|)``
+        for models whose output moves by at least 1 over their largest
+        threshold, and scaled down with that output scale below it, so that a
+        model written in small units (metres, coulombs) is inverted to the
+        same relative accuracy (a constant, so chunked runs stay bit-identical
+        to one-shot runs)."""
+        if getattr(self, "_rtol", None) is None:
+            r = np.asarray(self._r, dtype=np.float64)
+            xs = float(r.max()) if r.size and r.max() > 0 else 1.0
+            try:
+                y = np.asarray(self.model.simulate(np.array([0.0, xs])), dtype=np.float64)
+                ys = float(abs(y[1] - y[0]))
+            except Exception:   # any model the inverse accepts simulates; be safe all the same
+                ys = 1.0
+            self._rtol = 1e-14 * (min(1.0, ys) if np.isfinite(ys) and ys > 0 else 1.0)
+        return self._rtol
+
     def simulate(self, u, initial_state=None, return_state=False):
         """Compensator output v with ``model.simulate(v) == u`` (reachable u).
 
@@ -316,7 +334,7 @@ class ExactInverse:
         xlast = _k.inverse_kernel(self._fam, self._kl)(
             self._fam, target, self._r, self._p, self._p0, kstate, xprev,
             self._kl, self._pl, self._kr, self._pr, self._kh, self._ph, self._hscale,
-            self.input_limits[0], self.input_limits[1], 1e-14, out, info,
+            self.input_limits[0], self.input_limits[1], self._output_rtol(), out, info,
         )
         count, first = int(info[0]), int(info[1])
         self.last_unreachable = (count, first)
