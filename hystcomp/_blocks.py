@@ -89,10 +89,10 @@ class _KernelSteps:
         s = np.array(x, dtype=np.float64)
         if self.mode == "play":
             r, p, p0, kind, prm = self.args
-            _k.play_sum(v, r, p, p0, s, kind, prm, y)
+            _k.run_play_sum(v, r, p, p0, s, kind, prm, y)   # compiles only this kind's copy
         elif self.mode == "mplay":
             r, p, kl, pl, kr, pr = self.args
-            _k.mplay_sum(v, r, p, s, kl, pl, kr, pr, y)
+            _k.mplay_sum_kernel(kl, kr)(v, r, p, s, kl, pl, kr, pr, y)
         else:
             r, p, p0 = self.args
             w = s[:-1].copy()
@@ -124,9 +124,10 @@ class _ExactInverseSteps:
         kstate = st[1:-1].copy() if fam == _k.FAM_STOP else st[1:].copy()
         out = np.empty(1)
         info = np.zeros(3, dtype=np.int64)
-        xlast = _k.inverse_solve(fam, np.array([u]), comp._r, comp._p, comp._p0, kstate, xprev,
-                                 comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph, comp._hscale,
-                                 lo, hi, 1e-14, out, info)
+        # the copy this compensator needs, with ExactInverse.simulate's tolerance (same numbers)
+        xlast = _k.inverse_kernel(fam, comp._kl)(fam, np.array([u]), comp._r, comp._p, comp._p0, kstate, xprev,
+                                                 comp._kl, comp._pl, comp._kr, comp._pr, comp._kh, comp._ph,
+                                                 comp._hscale, lo, hi, comp._output_rtol(), out, info)
         if fam == _k.FAM_STOP:
             new = np.concatenate([[xlast], kstate, [xlast]])
         else:
