@@ -54,6 +54,7 @@ def run_one(name, seed):
         "case": name, "seed": seed, "expected": sorted(rec.expect_effects),
         "expect_verdict": rec.expect_verdict, "effects": effects, "verdict": verdict,
         "rms_heldout": None if rms is None else float(rms),
+        "rms_base": None if res is None else float(res.rms_before),
         "noise_floor": None if floor is None else float(floor),
         "true_noise": float(rec.noise_std), "right": bool(right), "explained_over_limit": bool(over),
         "clean": not rec.expect_effects and rec.expect_verdict == "explained",

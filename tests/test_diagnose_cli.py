@@ -41,15 +41,18 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert js["schema_version"] == 2
+    assert js["schema_version"] == 3
     assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
     assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]
     assert js["rms_after_pct"] == pytest.approx(100 * js["rms_after"] / js["output_span"])
     assert isinstance(js["untested"], dict) and js["stopped"]
     s = js["steps"][0]
-    assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence", "dropped"]
-    assert s["dropped"] is False and isinstance(js["revisions"], list)
+    assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence", "dropped",
+                       "tentative"]
+    assert s["dropped"] is False and s["tentative"] is False and js["tentative_effects"] == []
+    assert js["misfit_share_explained"] > 0.9
+    assert isinstance(js["revisions"], list)
     assert s["effect"] == "drift"
     sig = s["evidence"]["signature"]
     assert sig["present"] and sig["statistic"] > sig["threshold"]

@@ -7,7 +7,7 @@ import textwrap
 
 import numpy as np
 
-SCHEMA_VERSION = 2
+SCHEMA_VERSION = 3
 
 
 def _jsonable(x):
@@ -38,7 +38,16 @@ class Diagnosis:
         Noise floor estimated from the record [output units] (how:
         ``noise_info``).
     effects : list of str
-        The effects added, in order.
+        The effects named, in order.
+    tentative : list of str
+        Extensions the search added but does not name, because the model
+        with them still leaves more than 3 noise floors and they removed less
+        than 90 % of the base model's misfit above the noise (the misfit is
+        mostly of a kind no part describes; ``remaining`` says so under
+        ``out_of_vocabulary``).  Empty otherwise.
+    misfit_share_explained : float
+        Share of the base model's held-out mean square above the noise that
+        the final model removes (1: all of it).
     steps : list of dict
         One per added effect: ``effect``, ``rms_before``, ``rms_after``,
         ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
@@ -80,7 +89,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 2).
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 3).
 
         Returns
         -------
@@ -88,11 +97,13 @@ class Diagnosis:
         """
         steps = [{"effect": s["effect"], "rms_before": s["rms_before"], "rms_after": s["rms_after"],
                   "rms_before_pct": self._pct(s["rms_before"]), "rms_after_pct": self._pct(s["rms_after"]),
-                  "evidence": s["evidence"], "dropped": bool(s.get("dropped", False))} for s in self.steps]
+                  "evidence": s["evidence"], "dropped": bool(s.get("dropped", False)),
+                  "tentative": bool(s.get("tentative", False))} for s in self.steps]
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
             "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
-            "effects": list(self.effects), "rms_before": self.rms_before, "rms_after": self.rms_after,
+            "effects": list(self.effects), "tentative_effects": list(getattr(self, "tentative", [])),
+            "misfit_share_explained": getattr(self, "misfit_share_explained", None), "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
             "validation": list(self.validation), "steps": steps, "untested": dict(self.untested),
@@ -136,7 +147,9 @@ class Diagnosis:
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
-        lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}; held-out RMS "
+        tent = getattr(self, "tentative", [])
+        lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}"
+                     + (f" (tentative, not named: {', '.join(tent)})" if tent else "") + "; held-out RMS "
                      f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")
         return "\n".join(lines)
 

@@ -8,6 +8,9 @@ from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context
 
 __all__ = ["OutputClip", "OutputTanh"]
 
+#: largest shift of the output tanh's centre from the output's mid-range, in half-spans
+CENTRE = 0.3
+
 
 # ----------------------------------------------------------------------------
 # output side
@@ -126,7 +129,7 @@ class OutputTanh(Part):
     def parameters(self, ctx, kinds):
         # the limit may sit just inside the measured half-span: the measured
         # extremes carry the noise's extremes (about 3 noise floors)
-        return [Parameter("limit", 1.5, 0.97, 20.0, True), Parameter("centre", 0.0, -0.3, 0.3, False)]
+        return [Parameter("limit", 1.5, 0.97, 20.0, True), Parameter("centre", 0.0, -CENTRE, CENTRE, False)]
 
     def initial_values(self, ctx, kinds):
         return [{"limit": L, "centre": 0.0} for L in (1.0, 1.05, 1.15, 1.4, 2.0, 4.0)]
