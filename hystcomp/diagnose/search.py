@@ -231,7 +231,14 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
             say(stopped)
             break
-        gain, kind, dbic, _ = ok[0]
+        # Occam at each step (as in the revision): of acceptable parts whose held-out
+        # mean square is within PARSIMONY noise variances of the best, the one with
+        # the fewest nonlinear parameters (a dead time and a resonance that fit a
+        # delayed record equally well: the dead time)
+        top = ok[0][0]
+        close = [j for j in ok if top - j[0] <= PARSIMONY]
+        gain, kind, dbic, _ = min(close, key=lambda j: (len(trials[j[1]][0].parameters(ctx, set(trials[j[1]][1].kinds))),
+                                                         -j[0]))
         part, st, pt, rv = trials[kind]
         # joint refit of every nonlinear parameter, warm-started
         n_par = len(st.parameters(ctx))
