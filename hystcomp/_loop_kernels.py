@@ -75,9 +75,18 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, stat
 
 
 @njit(cache=True, nogil=True, inline="always")
+def step_play_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+                   info):
+    """Symmetric mGPI forward, Tanh envelope (the kernel of `MGPI.simulate`)."""
+    bin_[0] = x
+    _k.play_sum_tanh(bin_, r, p, p0, state, kl, pl, bout)
+    return bout[0], xprev
+
+
+@njit(cache=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Tanh or Atanh envelope."""
+    """Symmetric mGPI forward, Atanh envelope."""
     bin_[0] = x
     _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
@@ -163,7 +172,9 @@ def step_kernel(code, fam, kl, kr):
     if code == B_PLAY:
         if kl == _k.IDENTITY or kl == _k.LINEAR:
             return step_pi
-        return step_play_closed if kl in (_k.TANH, _k.ATANH) else step_play_general
+        if kl == _k.TANH:
+            return step_play_tanh
+        return step_play_closed if kl == _k.ATANH else step_play_general
     if code == B_MPLAY:
         return step_mplay_closed if _k.mplay_sum_kernel(kl, kr) is _k.mplay_sum_closed else step_mplay_general
     if code == B_STOP:
