@@ -62,7 +62,7 @@ from ._kernels_inverse import (  # noqa: F401
     _newton_point, _shrink, _play_eval_template, _play_solve, _play_solve_template,
     inverse_solve, inverse_kernel, inverse_solve_other,
     _play_eval_pi, _play_eval_closed, _play_eval_general, play_solve_pi,
-    play_solve_closed, play_solve_general)
+    play_solve_closed, play_solve_general, play_solve_tanh, _tanh_eval)
 
 # ----------------------------------------------------------------------------
 # forward kernels

@@ -13,7 +13,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fmplay, _fval, _fval_der, _prm3, _specialise,
+from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _fval, _fval_der, _prm3, _specialise,
+                                 _tanh,
                                  _vd_closed, _vd_closed_call, _vd_general, _vd_general_call, _vd_identity)
 
 # ----------------------------------------------------------------------------
@@ -224,7 +225,9 @@ def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, inf
     `inverse_kernel`)."""
     if kind == IDENTITY:
         return play_solve_pi(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
-    if kind == LINEAR or kind == TANH or kind == ATANH:
+    if kind == TANH:
+        return play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
+    if kind == LINEAR or kind == ATANH:
         return play_solve_closed(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
     return play_solve_general(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
 
@@ -325,6 +328,123 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
     return xprev
 
 
+@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"}, error_model="numpy")
+def _tanh_eval(x, rr, pp, zz, a, b, c):
+    """Output and one-sided slopes of a tanh mGPI for a new input x, branch-free
+    over every operator (SIMD lanes, as `_kernels.play_sum_tanh`): the lanes
+    of `play_solve_tanh` (lane 0 the p0 term with threshold 0, padding lanes
+    with an infinite threshold and weight 0).  An operator moving when x
+    increases (z_i <= x - r_i, or z_i > x + r_i) counts in the right slope,
+    one moving when x decreases (z_i < x - r_i, or z_i >= x + r_i) in the
+    left one, as in `_play_eval_template`.  Also returns the slopes once the
+    state is advanced to x (every operator then on or inside its boundaries:
+    right slope those at z_i = x - r_i, left slope those at x + r_i), which
+    are what an evaluation at x from the advanced state gives, bit for bit.
+    Every value is a function of (x, z_i) alone.  (``error_model="numpy"``:
+    see `play_sum_tanh`.)"""
+    y = 0.0
+    sr = 0.0
+    sl = 0.0
+    sra = 0.0
+    sla = 0.0
+    for i in range(rr.size):
+        zi = zz[i]
+        lo = x - rr[i]
+        hi = x + rr[i]
+        zc = lo if zi < lo else zi
+        zc = hi if zc > hi else zc
+        t = _tanh(_fma(b, zc, c))
+        d = pp[i] * (1.0 - t * t)
+        y += pp[i] * t
+        sr += d if (zi <= lo) | (zi > hi) else 0.0
+        sl += d if (zi < lo) | (zi >= hi) else 0.0
+        sra += d if (zc <= lo) | (zc > hi) else 0.0
+        sla += d if (zc < lo) | (zc >= hi) else 0.0
+    ab = a * b
+    return a * y, ab * sr, ab * sl, ab * sra, ab * sla
+
+
+@njit(cache=True, nogil=True)
+def play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
+    """`inverse_solve` for the symmetric tanh mGPI (FAM_PLAY, kind TANH).
+
+    The iteration of `_play_solve_template` (Newton on the one-sided slopes
+    inside a bracket), with the output and slopes at each trial input
+    evaluated by `_tanh_eval` over every operator in SIMD lanes instead of
+    the moving operators one at a time with cached values.  The output and
+    slopes at the accepted input (the next sample's starting point) are
+    those `_tanh_eval` gives at that input from the advanced state, so a
+    chunked run, which starts with that evaluation, equals a one-shot run
+    bit for bit.
+    """
+    N = r.size
+    a, b, c = _prm3(prm)
+    M = (N + 4) // 4 * 4
+    rr = np.full(M, np.inf)
+    pp = np.zeros(M)
+    zz = np.zeros(M)
+    rr[0] = 0.0
+    pp[0] = p0
+    zz[0] = xprev
+    for i in range(N):
+        rr[i + 1] = r[i]
+        pp[i + 1] = p[i]
+        zz[i + 1] = state[i]
+    n_clip = 0
+    first = -1
+    max_it = 0
+    xs = _input_scale(r)
+    # output and slopes at the starting point (before and after advancing
+    # the state to it: the initial state need not sit inside its boundaries)
+    y, sr, sl, sra, sla = _tanh_eval(xprev, rr, pp, zz, a, b, c)
+    for k in range(u.size):
+        target = u[k]
+        tol = rtol * (1.0 + abs(target))
+        x = xprev
+        f = y - target
+        if f < 0.0:
+            lo = x
+            hi = xmax
+        else:
+            hi = x
+            lo = xmin
+        checked_limit = False
+        it = 0
+        while abs(f) > tol and it < 200:
+            it += 1
+            x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
+            y, sr, sl, sra, sla = _tanh_eval(x, rr, pp, zz, a, b, c)
+            f = y - target
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
+            if stop:
+                break
+        if abs(f) > tol and (x >= xmax or x <= xmin):
+            n_clip += 1
+            if first < 0:
+                first = k
+        if it > max_it:
+            max_it = it
+        for i in range(M):
+            lo_i = x - rr[i]
+            hi_i = x + rr[i]
+            zi = zz[i]
+            zi = lo_i if zi < lo_i else zi
+            zi = hi_i if zi > hi_i else zi
+            zz[i] = zi
+        # the next starting point is x, the last point evaluated, from the
+        # advanced state: same output, slopes of the advanced state
+        sr = sra
+        sl = sla
+        xprev = x
+        out[k] = x
+    for i in range(N):
+        state[i] = zz[i + 1]
+    info[0] = n_clip
+    info[1] = first
+    info[2] = max_it
+    return xprev
+
+
 @njit(cache=True, nogil=True)
 def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
                   xmin, xmax, rtol, out, info):
@@ -354,7 +474,9 @@ def inverse_kernel(fam, kind):
         return inverse_solve_other
     if kind == IDENTITY:
         play = play_solve_pi
-    elif kind == LINEAR or kind == TANH or kind == ATANH:
+    elif kind == TANH:
+        play = play_solve_tanh
+    elif kind == LINEAR or kind == ATANH:
         play = play_solve_closed
     else:
         play = play_solve_general
