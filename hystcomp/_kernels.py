@@ -26,11 +26,15 @@ callers choose it with `play_sum_kernel`, `mplay_sum_kernel` and
 dispatching `play_sum`, `mplay_sum` and `inverse_solve` remain for compiled
 callers that take any block (they compile every copy on first use).
 Every kernel releases the GIL (``nogil=True``).  The PI forward sum
-(`pi_sum`) may reassociate the sum over operators (fastmath reassoc and
-contract only: NaN and inf keep their meaning), so it runs in SIMD lanes;
-its results are within a few ulp of the plain formula.  Every other fast path
-performs the same floating-point operations in the same order as the plain
-formulas.  Either way the operations do not depend on how a record is cut,
+(`pi_sum`), the tanh mGPI forward (`play_sum_tanh`) and the exact inverses of
+both (`play_solve_pi`, `play_solve_tanh`) evaluate every operator at every
+sample (or Newton step) branch-free and may reassociate the sums over
+operators (fastmath reassoc and contract only: NaN and inf keep their
+meaning), so they run in SIMD lanes; their results are within a few ulp of
+the plain formula (Tanh envelopes use the libm-free `_tanh`, within 2.2 ulp
+of NumPy's).  Every other fast path performs the same floating-point
+operations in the same order as the plain formulas.  Either way each value
+is a function of the input and the state only, not of how a record is cut,
 so chunked runs equal one-shot runs bit for bit.
 
 Operator families, all of the form ``w <- max(L(v), min(U(v), w))``:
@@ -53,7 +57,7 @@ from numba import njit
 # re-exported: every kernel name is importable from this module
 from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
-    _tanh, _fma, _pow2_of_shifted, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
+    _tanh, _fma, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
     _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
     _vd_general_call, _fmplay)
@@ -61,7 +65,7 @@ from ._kernels_inverse import (  # noqa: F401
     FAM_PLAY, FAM_MPLAY, FAM_GPI, FAM_STOP, _val_der, _output_and_slopes, _advance,
     _newton_point, _shrink, _play_eval_template, _play_solve, _play_solve_template,
     inverse_solve, inverse_kernel, inverse_solve_other,
-    _play_eval_pi, _play_eval_closed, _play_eval_general, play_solve_pi,
+    _play_eval_closed, _play_eval_general, play_solve_pi,
     play_solve_closed, play_solve_general, play_solve_tanh, _tanh_eval)
 
 # ----------------------------------------------------------------------------

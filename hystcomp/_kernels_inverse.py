@@ -14,8 +14,7 @@ import numpy as np
 from numba import njit
 
 from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _fval, _fval_der, _prm3, _specialise,
-                                 _tanh,
-                                 _vd_closed, _vd_closed_call, _vd_general, _vd_general_call, _vd_identity)
+                                 _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
 
 # ----------------------------------------------------------------------------
 # exact inverse: per-sample monotone solve
@@ -24,6 +23,7 @@ from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _
 # function (see `_specialise` and the end of this module); None here.
 _vd = None
 _play_eval = None
+_lanes_eval = None
 
 FAM_PLAY = 0    # symmetric plays with envelope g (PI, mGPI gl = gr); state z
 FAM_MPLAY = 1   # modified plays with gl != gr; state w (r includes 0)
@@ -364,16 +364,41 @@ def _tanh_eval(x, rr, pp, zz, a, b, c):
     return a * y, ab * sr, ab * sl, ab * sra, ab * sla
 
 
-@njit(cache=True, nogil=True)
-def play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
-    """`inverse_solve` for the symmetric tanh mGPI (FAM_PLAY, kind TANH).
+@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"})
+def _pi_eval(x, rr, pp, zz, a, b, c):
+    """`_tanh_eval` for the PI (identity envelope; a, b, c unused): output
+    and one-sided slopes, before and after advancing the state to x."""
+    y = 0.0
+    sr = 0.0
+    sl = 0.0
+    sra = 0.0
+    sla = 0.0
+    for i in range(rr.size):
+        zi = zz[i]
+        lo = x - rr[i]
+        hi = x + rr[i]
+        zc = lo if zi < lo else zi
+        zc = hi if zc > hi else zc
+        d = pp[i]
+        y += d * zc
+        sr += d if (zi <= lo) | (zi > hi) else 0.0
+        sl += d if (zi < lo) | (zi >= hi) else 0.0
+        sra += d if (zc <= lo) | (zc > hi) else 0.0
+        sla += d if (zc < lo) | (zc >= hi) else 0.0
+    return y, sr, sl, sra, sla
+
+
+def _play_solve_lanes_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
+    """`inverse_solve` for FAM_PLAY in SIMD lanes: the PI (`play_solve_pi`,
+    `_lanes_eval` = `_pi_eval`) and the symmetric tanh mGPI
+    (`play_solve_tanh`, `_tanh_eval`).
 
     The iteration of `_play_solve_template` (Newton on the one-sided slopes
     inside a bracket), with the output and slopes at each trial input
-    evaluated by `_tanh_eval` over every operator in SIMD lanes instead of
+    evaluated by `_lanes_eval` over every operator in SIMD lanes instead of
     the moving operators one at a time with cached values.  The output and
     slopes at the accepted input (the next sample's starting point) are
-    those `_tanh_eval` gives at that input from the advanced state, so a
+    those `_lanes_eval` gives at that input from the advanced state, so a
     chunked run, which starts with that evaluation, equals a one-shot run
     bit for bit.
     """
@@ -396,7 +421,7 @@ def play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out,
     xs = _input_scale(r)
     # output and slopes at the starting point (before and after advancing
     # the state to it: the initial state need not sit inside its boundaries)
-    y, sr, sl, sra, sla = _tanh_eval(xprev, rr, pp, zz, a, b, c)
+    y, sr, sl, sra, sla = _lanes_eval(xprev, rr, pp, zz, a, b, c)
     for k in range(u.size):
         target = u[k]
         tol = rtol * (1.0 + abs(target))
@@ -413,7 +438,7 @@ def play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out,
         while abs(f) > tol and it < 200:
             it += 1
             x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
-            y, sr, sl, sra, sla = _tanh_eval(x, rr, pp, zz, a, b, c)
+            y, sr, sl, sra, sla = _lanes_eval(x, rr, pp, zz, a, b, c)
             f = y - target
             lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
             if stop:
@@ -540,12 +565,14 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
 # with `_vd` bound to the class's evaluator: inlined by numba in the loop over
 # operators (`_play_eval_*`), a call in the solver itself (once per Newton
 # iteration: inlining it there doubled the compilation time for no speed).
-_play_eval_pi = _specialise(_play_eval_template, "_play_eval_pi", _vd=_vd_identity)
 _play_eval_closed = _specialise(_play_eval_template, "_play_eval_closed", _vd=_vd_closed)
 _play_eval_general = _specialise(_play_eval_template, "_play_eval_general", _vd=_vd_general)
 play_solve_pi = _specialise(
-    _play_solve_template, "play_solve_pi", _vd=_vd_identity, _play_eval=_play_eval_pi,
-    doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope: no envelope code in the loops).")
+    _play_solve_lanes_template, "play_solve_pi", _lanes_eval=_pi_eval,
+    doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope), in SIMD lanes.")
+play_solve_tanh = _specialise(
+    _play_solve_lanes_template, "play_solve_tanh", _lanes_eval=_tanh_eval,
+    doc="`inverse_solve` for FAM_PLAY with a Tanh envelope, in SIMD lanes.")
 play_solve_closed = _specialise(
     _play_solve_template, "play_solve_closed", _vd=_vd_closed_call, _play_eval=_play_eval_closed,
     doc="`inverse_solve` for FAM_PLAY with Identity, Linear, Tanh or Atanh (no general envelope code "
