@@ -376,6 +376,35 @@ _vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
 
 
 # ----------------------------------------------------------------------------
+# SIMD lanes of the branch-free kernels (play_sum_tanh, play_solve_pi/_tanh)
+# ----------------------------------------------------------------------------
+@njit(cache=True, nogil=True)
+def _padded_lanes(r, p, p0, z, z0):
+    """(thresholds, weights, positions) of the lanes of a branch-free kernel:
+    lane 0 the p0 term (threshold 0, position z0), lanes 1..N the operators,
+    then padding to a multiple of 4 with operators that never move (infinite
+    threshold) and weigh 0.  np.empty and loops only (np.full / np.zeros
+    would compile more code on first use)."""
+    N = r.size
+    M = (N + 4) // 4 * 4
+    rr = np.empty(M)
+    pp = np.empty(M)
+    zz = np.empty(M)
+    rr[0] = 0.0
+    pp[0] = p0
+    zz[0] = z0
+    for i in range(N):
+        rr[i + 1] = r[i]
+        pp[i + 1] = p[i]
+        zz[i + 1] = z[i]
+    for i in range(N + 1, M):
+        rr[i] = _INF
+        pp[i] = 0.0
+        zz[i] = 0.0
+    return rr, pp, zz
+
+
+# ----------------------------------------------------------------------------
 # operator step shared by the forward and inverse kernels
 # ----------------------------------------------------------------------------
 @njit(cache=True, nogil=True, inline="always")

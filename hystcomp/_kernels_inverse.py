@@ -14,7 +14,7 @@ import numpy as np
 from numba import njit
 
 from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _fval, _fval_der, _prm3, _specialise,
-                                 _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
+                                 _padded_lanes, _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
 
 # ----------------------------------------------------------------------------
 # exact inverse: per-sample monotone solve
@@ -404,17 +404,8 @@ def _play_solve_lanes_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax,
     """
     N = r.size
     a, b, c = _prm3(prm)
-    M = (N + 4) // 4 * 4
-    rr = np.full(M, np.inf)
-    pp = np.zeros(M)
-    zz = np.zeros(M)
-    rr[0] = 0.0
-    pp[0] = p0
-    zz[0] = xprev
-    for i in range(N):
-        rr[i + 1] = r[i]
-        pp[i + 1] = p[i]
-        zz[i + 1] = state[i]
+    rr, pp, zz = _padded_lanes(r, p, p0, state, xprev)
+    M = rr.size
     n_clip = 0
     first = -1
     max_it = 0

@@ -75,20 +75,17 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, stat
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_play_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
-                   info):
-    """Symmetric mGPI forward, Tanh envelope (the kernel of `MGPI.simulate`)."""
-    bin_[0] = x
-    _k.play_sum_tanh(bin_, r, p, p0, state, kl, pl, bout)
-    return bout[0], xprev
-
-
-@njit(cache=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Atanh envelope."""
+    """Symmetric mGPI forward, Tanh or Atanh envelope (the kernels of
+    `MGPI.simulate`: `play_sum_tanh`, `play_sum_closed`).  One step for both,
+    so that a loop of a tanh actuator with or without the analytic
+    compensator (an Atanh envelope) is one compiled loop copy."""
     bin_[0] = x
-    _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
+    if kl == _k.TANH:
+        _k.play_sum_tanh(bin_, r, p, p0, state, kl, pl, bout)
+    else:
+        _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
 
 
@@ -181,9 +178,7 @@ def step_kernel(code, fam, kl, kr):
     if code == B_PLAY:
         if kl == _k.IDENTITY or kl == _k.LINEAR:
             return step_pi
-        if kl == _k.TANH:
-            return step_play_tanh
-        return step_play_closed if kl == _k.ATANH else step_play_general
+        return step_play_closed if kl in (_k.TANH, _k.ATANH) else step_play_general
     if code == B_MPLAY:
         return step_mplay_closed if _k.mplay_sum_kernel(kl, kr) is _k.mplay_sum_closed else step_mplay_general
     if code == B_STOP:
