@@ -57,7 +57,7 @@ from numba import njit
 # re-exported: every kernel name is importable from this module
 from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
-    _tanh, _fma, _padded_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
+    _tanh, _fma, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
     _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
     _vd_general_call, _fmplay)
@@ -128,8 +128,9 @@ def play_sum_tanh(v, r, p, p0, z, kind, prm, out):
     n = v.size
     N = r.size
     a, b, c = _prm3(prm)
-    rr, pp, zz = _padded_lanes(r, p, p0, z, 0.0)
-    M = rr.size
+    M = (N + 4) // 4 * 4
+    rr, pp, zz = np.empty(M), np.empty(M), np.empty(M)
+    _fill_lanes(r, p, p0, z, 0.0, rr, pp, zz)
     for k in range(n):
         x = v[k]
         s = 0.0

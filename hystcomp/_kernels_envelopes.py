@@ -378,18 +378,13 @@ _vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
 # ----------------------------------------------------------------------------
 # SIMD lanes of the branch-free kernels (play_sum_tanh, play_solve_pi/_tanh)
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True)
-def _padded_lanes(r, p, p0, z, z0):
-    """(thresholds, weights, positions) of the lanes of a branch-free kernel:
-    lane 0 the p0 term (threshold 0, position z0), lanes 1..N the operators,
-    then padding to a multiple of 4 with operators that never move (infinite
-    threshold) and weigh 0.  np.empty and loops only (np.full / np.zeros
-    would compile more code on first use)."""
+@njit(cache=True, nogil=True, inline="always")
+def _fill_lanes(r, p, p0, z, z0, rr, pp, zz):
+    """Fill the lanes (rr, pp, zz) of a branch-free kernel, of size M = the
+    next multiple of 4 above N: lane 0 the p0 term (threshold 0, position
+    z0), lanes 1..N the operators, then operators that never move (infinite
+    threshold) and weigh 0."""
     N = r.size
-    M = (N + 4) // 4 * 4
-    rr = np.empty(M)
-    pp = np.empty(M)
-    zz = np.empty(M)
     rr[0] = 0.0
     pp[0] = p0
     zz[0] = z0
@@ -397,11 +392,10 @@ def _padded_lanes(r, p, p0, z, z0):
         rr[i + 1] = r[i]
         pp[i + 1] = p[i]
         zz[i + 1] = z[i]
-    for i in range(N + 1, M):
+    for i in range(N + 1, rr.size):
         rr[i] = _INF
         pp[i] = 0.0
         zz[i] = 0.0
-    return rr, pp, zz
 
 
 # ----------------------------------------------------------------------------

@@ -14,7 +14,7 @@ import numpy as np
 from numba import njit
 
 from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _fval, _fval_der, _prm3, _specialise,
-                                 _padded_lanes, _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
+                                 _fill_lanes, _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
 
 # ----------------------------------------------------------------------------
 # exact inverse: per-sample monotone solve
@@ -404,8 +404,9 @@ def _play_solve_lanes_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax,
     """
     N = r.size
     a, b, c = _prm3(prm)
-    rr, pp, zz = _padded_lanes(r, p, p0, state, xprev)
-    M = rr.size
+    M = (N + 4) // 4 * 4
+    rr, pp, zz = np.empty(M), np.empty(M), np.empty(M)
+    _fill_lanes(r, p, p0, state, xprev, rr, pp, zz)
     n_clip = 0
     first = -1
     max_it = 0

@@ -77,15 +77,12 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, stat
 @njit(cache=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Tanh or Atanh envelope (the kernels of
-    `MGPI.simulate`: `play_sum_tanh`, `play_sum_closed`).  One step for both,
-    so that a loop of a tanh actuator with or without the analytic
-    compensator (an Atanh envelope) is one compiled loop copy."""
+    """Symmetric mGPI forward, Tanh or Atanh envelope, one sample per step
+    (the scalar `play_sum_closed`: same envelope values as `MGPI.simulate`'s
+    SIMD kernel, ordered sum; one step and one compiled loop copy for a tanh
+    actuator with or without the analytic compensator, an Atanh envelope)."""
     bin_[0] = x
-    if kl == _k.TANH:
-        _k.play_sum_tanh(bin_, r, p, p0, state, kl, pl, bout)
-    else:
-        _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
+    _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
 
 
