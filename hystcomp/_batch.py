@@ -38,7 +38,7 @@ def simulate_columns(model, v, initial_state=None, return_state=False):
     states = np.empty((m, model.n_states))
     for j in range(m):
         x = as_signal(V[:, j], f"v[:, {j}]")
-        model._check_input_domain(x)
+        model._check_input_domain(x, finite=True)
         st = model.default_state() if initial_state is None else as_state(S0[j], model.n_states, f"initial_state[{j}]")
         Y[:, j] = model._simulate(x, st)
         states[j] = st
@@ -81,7 +81,7 @@ def simulate_batch(model, v, weights, p0=None, initial_state=None, return_state=
     `weights` (and p0 by `p0`), shape (n, m).  See
     :meth:`hystcomp.models.HysteresisModel.simulate_batch`."""
     x = as_signal(v, "v")
-    model._check_input_domain(x)
+    model._check_input_domain(x, finite=True)
     W, p0s = batch_weights(model, weights, p0)
     state = model.default_state() if initial_state is None else as_state(initial_state, model.n_states)
     Y = np.empty((x.size, W.shape[0]))

@@ -26,11 +26,15 @@ callers choose it with `play_sum_kernel`, `mplay_sum_kernel` and
 dispatching `play_sum`, `mplay_sum` and `inverse_solve` remain for compiled
 callers that take any block (they compile every copy on first use).
 Every kernel releases the GIL (``nogil=True``).  The PI forward sum
-(`pi_sum`) may reassociate the sum over operators (fastmath reassoc and
-contract only: NaN and inf keep their meaning), so it runs in SIMD lanes;
-its results are within a few ulp of the plain formula.  Every other fast path
-performs the same floating-point operations in the same order as the plain
-formulas.  Either way the operations do not depend on how a record is cut,
+(`pi_sum`), the tanh mGPI forward (`play_sum_tanh`) and the exact inverses of
+both (`play_solve_pi`, `play_solve_tanh`) evaluate every operator at every
+sample (or Newton step) branch-free and may reassociate the sums over
+operators (fastmath reassoc and contract only: NaN and inf keep their
+meaning), so they run in SIMD lanes; their results are within a few ulp of
+the plain formula (Tanh envelopes use the libm-free `_tanh`, within 2.2 ulp
+of NumPy's).  Every other fast path performs the same floating-point
+operations in the same order as the plain formulas.  Either way each value
+is a function of the input and the state only, not of how a record is cut,
 so chunked runs equal one-shot runs bit for bit.
 
 Operator families, all of the form ``w <- max(L(v), min(U(v), w))``:
@@ -53,7 +57,7 @@ from numba import njit
 # re-exported: every kernel name is importable from this module
 from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
-    _tanh, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
+    _tanh, _fma, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
     _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
     _vd_general_call, _fmplay)
@@ -61,8 +65,8 @@ from ._kernels_inverse import (  # noqa: F401
     FAM_PLAY, FAM_MPLAY, FAM_GPI, FAM_STOP, _val_der, _output_and_slopes, _advance,
     _newton_point, _shrink, _play_eval_template, _play_solve, _play_solve_template,
     inverse_solve, inverse_kernel, inverse_solve_other,
-    _play_eval_pi, _play_eval_closed, _play_eval_general, play_solve_pi,
-    play_solve_closed, play_solve_general)
+    _play_eval_closed, _play_eval_general, play_solve_pi,
+    play_solve_closed, play_solve_general, play_solve_tanh, _tanh_eval)
 
 # ----------------------------------------------------------------------------
 # forward kernels
@@ -102,6 +106,47 @@ def pi_sum(v, r, p, p0, z, scale, out):
         out[k] = scale * (p0 * x + s)
 
 
+@njit(cache=True, nogil=True, fastmath=_SUM_FLAGS, error_model="numpy")
+def play_sum_tanh(v, r, p, p0, z, kind, prm, out):
+    """Symmetric mGPI with a Tanh envelope (eq. 25/49, gamma(x) = a tanh(b x + c)):
+    ``out = a (p0 tanh(b v + c) + sum_i p_i tanh(b z_i + c))``; `z` updated
+    in place.
+
+    Branch-free, in SIMD lanes: every operator's play position is clamped
+    and its envelope evaluated at every sample (`_tanh` has no libm call and
+    no branch), which costs less than evaluating only the moving operators
+    one at a time (benchmarks/bench_models.py).  The p0 term is one more
+    lane (threshold 0: its position is the input), and the lanes are padded
+    to a multiple of 4 with operators that never move and weigh 0.  Each
+    term depends on the operator's own position alone, so chunked runs equal
+    one-shot runs bit for bit; the sum is reassociated and contracted
+    (`_SUM_FLAGS`), so results are within a few ulp of the plain formula
+    (`play_sum_closed`; tests/test_tanh_kernel.py).  ``error_model="numpy"``
+    drops the Python division check, whose exit would stop the
+    vectorisation (the denominator in `_tanh` is at least 1).
+    """
+    n = v.size
+    N = r.size
+    a, b, c = _prm3(prm)
+    M = (N + 4) // 4 * 4
+    rr, pp, zz = np.empty(M), np.empty(M), np.empty(M)
+    _fill_lanes(r, p, p0, z, 0.0, rr, pp, zz)
+    for k in range(n):
+        x = v[k]
+        s = 0.0
+        for i in range(M):
+            lo = x - rr[i]
+            hi = x + rr[i]
+            zi = zz[i]
+            zi = lo if zi < lo else zi
+            zi = hi if zi > hi else zi
+            zz[i] = zi
+            s += pp[i] * _tanh(_fma(b, zi, c))
+        out[k] = a * s
+    for i in range(N):
+        z[i] = zz[i + 1]
+
+
 def play_sum_kernel(kind):
     """The compiled kernel `play_sum` would use for envelope `kind`, chosen in
     Python so that a call compiles only that kernel (cold start).  Returns
@@ -109,7 +154,9 @@ def play_sum_kernel(kind):
     ``(kind, prm)``."""
     if kind == IDENTITY or kind == LINEAR:
         return pi_sum, True
-    if kind == TANH or kind == ATANH:
+    if kind == TANH:
+        return play_sum_tanh, False
+    if kind == ATANH:
         return play_sum_closed, False
     return play_sum_general, False
 
@@ -136,7 +183,9 @@ def play_sum(v, r, p, p0, z, kind, prm, out):
     """
     if kind == IDENTITY or kind == LINEAR:
         pi_sum(v, r, p, p0, z, 1.0 if kind == IDENTITY else prm[0], out)
-    elif kind == TANH or kind == ATANH:
+    elif kind == TANH:
+        play_sum_tanh(v, r, p, p0, z, kind, prm, out)
+    elif kind == ATANH:
         play_sum_closed(v, r, p, p0, z, kind, prm, out)
     else:
         play_sum_general(v, r, p, p0, z, kind, prm, out)

@@ -13,8 +13,8 @@ import math
 import numpy as np
 from numba import njit
 
-from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fmplay, _fval, _fval_der, _prm3, _specialise,
-                                 _vd_closed, _vd_closed_call, _vd_general, _vd_general_call, _vd_identity)
+from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fma, _fmplay, _fval, _fval_der, _prm3, _specialise,
+                                 _fill_lanes, _tanh, _vd_closed, _vd_closed_call, _vd_general, _vd_general_call)
 
 # ----------------------------------------------------------------------------
 # exact inverse: per-sample monotone solve
@@ -23,6 +23,7 @@ from ._kernels_envelopes import (ATANH, IDENTITY, LINEAR, TANH, _fmplay, _fval, 
 # function (see `_specialise` and the end of this module); None here.
 _vd = None
 _play_eval = None
+_lanes_eval = None
 
 FAM_PLAY = 0    # symmetric plays with envelope g (PI, mGPI gl = gr); state z
 FAM_MPLAY = 1   # modified plays with gl != gr; state w (r includes 0)
@@ -224,7 +225,9 @@ def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, inf
     `inverse_kernel`)."""
     if kind == IDENTITY:
         return play_solve_pi(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
-    if kind == LINEAR or kind == TANH or kind == ATANH:
+    if kind == TANH:
+        return play_solve_tanh(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
+    if kind == LINEAR or kind == ATANH:
         return play_solve_closed(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
     return play_solve_general(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info)
 
@@ -325,6 +328,140 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
     return xprev
 
 
+@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"}, error_model="numpy")
+def _tanh_eval(x, rr, pp, zz, a, b, c):
+    """Output and one-sided slopes of a tanh mGPI for a new input x, branch-free
+    over every operator (SIMD lanes, as `_kernels.play_sum_tanh`): the lanes
+    of `play_solve_tanh` (lane 0 the p0 term with threshold 0, padding lanes
+    with an infinite threshold and weight 0).  An operator moving when x
+    increases (z_i <= x - r_i, or z_i > x + r_i) counts in the right slope,
+    one moving when x decreases (z_i < x - r_i, or z_i >= x + r_i) in the
+    left one, as in `_play_eval_template`.  Also returns the slopes once the
+    state is advanced to x (every operator then on or inside its boundaries:
+    right slope those at z_i = x - r_i, left slope those at x + r_i), which
+    are what an evaluation at x from the advanced state gives, bit for bit.
+    Every value is a function of (x, z_i) alone.  (``error_model="numpy"``:
+    see `play_sum_tanh`.)"""
+    y = 0.0
+    sr = 0.0
+    sl = 0.0
+    sra = 0.0
+    sla = 0.0
+    for i in range(rr.size):
+        zi = zz[i]
+        lo = x - rr[i]
+        hi = x + rr[i]
+        zc = lo if zi < lo else zi
+        zc = hi if zc > hi else zc
+        t = _tanh(_fma(b, zc, c))
+        d = pp[i] * (1.0 - t * t)
+        y += pp[i] * t
+        sr += d if (zi <= lo) | (zi > hi) else 0.0
+        sl += d if (zi < lo) | (zi >= hi) else 0.0
+        sra += d if (zc <= lo) | (zc > hi) else 0.0
+        sla += d if (zc < lo) | (zc >= hi) else 0.0
+    ab = a * b
+    return a * y, ab * sr, ab * sl, ab * sra, ab * sla
+
+
+@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"})
+def _pi_eval(x, rr, pp, zz, a, b, c):
+    """`_tanh_eval` for the PI (identity envelope; a, b, c unused): output
+    and one-sided slopes, before and after advancing the state to x."""
+    y = 0.0
+    sr = 0.0
+    sl = 0.0
+    sra = 0.0
+    sla = 0.0
+    for i in range(rr.size):
+        zi = zz[i]
+        lo = x - rr[i]
+        hi = x + rr[i]
+        zc = lo if zi < lo else zi
+        zc = hi if zc > hi else zc
+        d = pp[i]
+        y += d * zc
+        sr += d if (zi <= lo) | (zi > hi) else 0.0
+        sl += d if (zi < lo) | (zi >= hi) else 0.0
+        sra += d if (zc <= lo) | (zc > hi) else 0.0
+        sla += d if (zc < lo) | (zc >= hi) else 0.0
+    return y, sr, sl, sra, sla
+
+
+def _play_solve_lanes_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
+    """`inverse_solve` for FAM_PLAY in SIMD lanes: the PI (`play_solve_pi`,
+    `_lanes_eval` = `_pi_eval`) and the symmetric tanh mGPI
+    (`play_solve_tanh`, `_tanh_eval`).
+
+    The iteration of `_play_solve_template` (Newton on the one-sided slopes
+    inside a bracket), with the output and slopes at each trial input
+    evaluated by `_lanes_eval` over every operator in SIMD lanes instead of
+    the moving operators one at a time with cached values.  The output and
+    slopes at the accepted input (the next sample's starting point) are
+    those `_lanes_eval` gives at that input from the advanced state, so a
+    chunked run, which starts with that evaluation, equals a one-shot run
+    bit for bit.
+    """
+    N = r.size
+    a, b, c = _prm3(prm)
+    M = (N + 4) // 4 * 4
+    rr, pp, zz = np.empty(M), np.empty(M), np.empty(M)
+    _fill_lanes(r, p, p0, state, xprev, rr, pp, zz)
+    n_clip = 0
+    first = -1
+    max_it = 0
+    xs = _input_scale(r)
+    # output and slopes at the starting point (before and after advancing
+    # the state to it: the initial state need not sit inside its boundaries)
+    y, sr, sl, sra, sla = _lanes_eval(xprev, rr, pp, zz, a, b, c)
+    for k in range(u.size):
+        target = u[k]
+        tol = rtol * (1.0 + abs(target))
+        x = xprev
+        f = y - target
+        if f < 0.0:
+            lo = x
+            hi = xmax
+        else:
+            hi = x
+            lo = xmin
+        checked_limit = False
+        it = 0
+        while abs(f) > tol and it < 200:
+            it += 1
+            x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
+            y, sr, sl, sra, sla = _lanes_eval(x, rr, pp, zz, a, b, c)
+            f = y - target
+            lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
+            if stop:
+                break
+        if abs(f) > tol and (x >= xmax or x <= xmin):
+            n_clip += 1
+            if first < 0:
+                first = k
+        if it > max_it:
+            max_it = it
+        for i in range(M):
+            lo_i = x - rr[i]
+            hi_i = x + rr[i]
+            zi = zz[i]
+            zi = lo_i if zi < lo_i else zi
+            zi = hi_i if zi > hi_i else zi
+            zz[i] = zi
+        # the next starting point is x, the last point evaluated, from the
+        # advanced state: same output, slopes of the advanced state
+        sr = sra
+        sl = sla
+        xprev = x
+        out[k] = x
+    for i in range(N):
+        state[i] = zz[i + 1]
+    info[0] = n_clip
+    info[1] = first
+    info[2] = max_it
+    return xprev
+
+
 @njit(cache=True, nogil=True)
 def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
                   xmin, xmax, rtol, out, info):
@@ -354,7 +491,9 @@ def inverse_kernel(fam, kind):
         return inverse_solve_other
     if kind == IDENTITY:
         play = play_solve_pi
-    elif kind == LINEAR or kind == TANH or kind == ATANH:
+    elif kind == TANH:
+        play = play_solve_tanh
+    elif kind == LINEAR or kind == ATANH:
         play = play_solve_closed
     else:
         play = play_solve_general
@@ -418,12 +557,14 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
 # with `_vd` bound to the class's evaluator: inlined by numba in the loop over
 # operators (`_play_eval_*`), a call in the solver itself (once per Newton
 # iteration: inlining it there doubled the compilation time for no speed).
-_play_eval_pi = _specialise(_play_eval_template, "_play_eval_pi", _vd=_vd_identity)
 _play_eval_closed = _specialise(_play_eval_template, "_play_eval_closed", _vd=_vd_closed)
 _play_eval_general = _specialise(_play_eval_template, "_play_eval_general", _vd=_vd_general)
 play_solve_pi = _specialise(
-    _play_solve_template, "play_solve_pi", _vd=_vd_identity, _play_eval=_play_eval_pi,
-    doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope: no envelope code in the loops).")
+    _play_solve_lanes_template, "play_solve_pi", _lanes_eval=_pi_eval,
+    doc="`inverse_solve` for FAM_PLAY with the PI (identity envelope), in SIMD lanes.")
+play_solve_tanh = _specialise(
+    _play_solve_lanes_template, "play_solve_tanh", _lanes_eval=_tanh_eval,
+    doc="`inverse_solve` for FAM_PLAY with a Tanh envelope, in SIMD lanes.")
 play_solve_closed = _specialise(
     _play_solve_template, "play_solve_closed", _vd=_vd_closed_call, _play_eval=_play_eval_closed,
     doc="`inverse_solve` for FAM_PLAY with Identity, Linear, Tanh or Atanh (no general envelope code "

@@ -77,7 +77,10 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, stat
 @njit(cache=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Tanh or Atanh envelope."""
+    """Symmetric mGPI forward, Tanh or Atanh envelope, one sample per step
+    (the scalar `play_sum_closed`: same envelope values as `MGPI.simulate`'s
+    SIMD kernel, ordered sum; one step and one compiled loop copy for a tanh
+    actuator with or without the analytic compensator, an Atanh envelope)."""
     bin_[0] = x
     _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
@@ -128,9 +131,18 @@ def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi
 
 
 @njit(cache=True, nogil=True, inline="always")
+def step_exact_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+                    info):
+    """Exact inverse of a symmetric tanh mGPI (the kernel of `ExactInverse.simulate`)."""
+    bin_[0] = x
+    xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    return bout[0], xprev
+
+
+@njit(cache=True, nogil=True, inline="always")
 def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
                       info):
-    """Exact inverse of a symmetric mGPI with a closed-form envelope."""
+    """Exact inverse of a symmetric mGPI with a Linear or Atanh envelope."""
     bin_[0] = x
     xprev = _k.play_solve_closed(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
     return bout[0], xprev
@@ -172,7 +184,9 @@ def step_kernel(code, fam, kl, kr):
         return step_exact_other
     if kl == _k.IDENTITY:
         return step_exact_pi
-    return step_exact_closed if kl in (_k.LINEAR, _k.TANH, _k.ATANH) else step_exact_general
+    if kl == _k.TANH:
+        return step_exact_tanh
+    return step_exact_closed if kl in (_k.LINEAR, _k.ATANH) else step_exact_general
 
 
 @njit(cache=True, nogil=True)

@@ -49,7 +49,7 @@ class _DifferentialModel(HysteresisModel):
         """``[v_prev, w] = [0, 0]``."""
         return np.zeros(2)
 
-    def _check_input_domain(self, x):
+    def _check_input_domain(self, x, finite=False):
         pass
 
     def _state(self, initial_state):

@@ -394,7 +394,7 @@ class Preisach(_PlaneModel):
             )
         return k
 
-    def _check_input_domain(self, x):
+    def _check_input_domain(self, x, finite=False):
         pass
 
     def simulate(self, v, initial_state=None, return_state=False):
@@ -493,7 +493,7 @@ class KP(_PlaneModel):
         """
         return np.zeros(self.n)
 
-    def _check_input_domain(self, x):
+    def _check_input_domain(self, x, finite=False):
         pass
 
     def operator_outputs(self, state):

@@ -207,8 +207,11 @@ def test_exact_inverse_rejects_unsupported_models():
         StopPI(R, P, 0.7),
         GPI(R, P, Tanh(5.0, 0.3), Tanh(4.0, 0.2), H=Linear(0.5)),
         MGPI(R, P, 1.0, envelope_left=Tanh(5.0, 0.3), envelope_right=Tanh(4.0, 0.2)),
+        # the SIMD solver of the symmetric tanh mGPI (play_solve_tanh)
+        MGPI(R, P, 1.0, envelope=Tanh(5.0, 0.3)),
+        MGPI(R, P, 0.4, envelope=Tanh(3.0, 2.0, -0.7)),
     ],
-    ids=["PI", "StopPI", "GPI", "MGPI_asym"],
+    ids=["PI", "StopPI", "GPI", "MGPI_asym", "MGPI_tanh", "MGPI_tanh_steep_offset"],
 )
 def test_exact_inverse_every_family_and_chunks(model):
     u = 0.5 * U

@@ -12,8 +12,8 @@ from hystcomp.envelopes import Tanh
 
 def test_kernels_are_nogil():
     from hystcomp import _kernels as _k
-    for f in (_k.pi_sum, _k.play_sum, _k.play_sum_closed, _k.mplay_sum, _k.play_solve_pi,
-              _k.play_solve_closed, _k.inverse_solve, _k.inverse_solve_other, _k.play_states):
+    for f in (_k.pi_sum, _k.play_sum, _k.play_sum_closed, _k.play_sum_tanh, _k.mplay_sum, _k.play_solve_pi,
+              _k.play_solve_closed, _k.play_solve_tanh, _k.inverse_solve, _k.inverse_solve_other, _k.play_states):
         assert f.targetoptions.get("nogil") is True, f.__name__
 
 
