@@ -67,6 +67,14 @@ def test_flag_core_extensions_are_tentative_not_named():
     if rep.tentative:
         assert all(s["tentative"] for s in js["steps"])
         assert "tentative, not named" in rep.report()
+        # the figures say so too: every step panel and the final one
+        import matplotlib.pyplot as plt
+
+        figs = rep.plots()
+        titles = [a.get_title() for a in figs["gap"].axes]
+        assert all("[tentative]" in t for t in titles[1:len(rep.steps) + 1]), titles
+        assert "tentative, not named" in figs["loops"]._suptitle.get_text()
+        plt.close("all")
 
 
 def test_named_effects_explain_most_of_the_misfit():

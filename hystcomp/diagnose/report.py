@@ -240,14 +240,25 @@ class Diagnosis:
             a.set(xlabel=f"input v [{iu}]", ylabel=f"output y [{ou}]",
                   title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
             a.legend(fontsize=8, loc="upper left", markerscale=4)
-        fig.suptitle("Loops on the held-out part: " + " + ".join(["PI"] + list(self.effects)))
+        tent = list(getattr(self, "tentative", []))
+        fig.suptitle("Loops on the held-out part: " + " + ".join(["PI"] + (tent or list(self.effects)))
+                     + (" (tentative, not named)" if tent else ""))
         out["loops"] = fig
 
         # residual before and after each step, noise floor drawn
         preds = self._step_preds
-        labels = ["base PI"] + [f"+ {st['effect']}" for st in self.steps]
+        labels = ["base PI"]
+        for st in self.steps:
+            rv = st["evidence"].get("revised")
+            if rv is not None and rv["by"] is not None:
+                lab = f"+ {rv['effect_before']} (replaced by {rv['effect_after']} in the revision)"
+            else:
+                lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
+            labels.append(lab + (" [tentative]" if st.get("tentative") else ""))
+        tent = list(getattr(self, "tentative", []))
+        final_name = " + ".join(["PI"] + (tent or list(self.effects))) + (" (tentative, not named)" if tent else "")
         if len(preds) > len(labels):
-            labels.append("final: " + " + ".join(["PI"] + list(self.effects)) + " (after revision)")
+            labels.append(f"final: {final_name} (after revision)")
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)
