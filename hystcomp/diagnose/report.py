@@ -85,6 +85,11 @@ class Diagnosis:
     def __init__(self, **kw):
         self.__dict__.update(kw)
 
+    def _final_name(self):
+        """The final model's parts, e.g. "PI + creep + drift" (tentative ones said so)."""
+        names = " + ".join(["PI"] + list(self.tentative or self.effects))
+        return names + (" (tentative, not named)" if self.tentative else "")
+
     def _pct(self, x):
         return 100.0 * x / self.output_span
 
@@ -102,8 +107,8 @@ class Diagnosis:
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
             "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
-            "effects": list(self.effects), "tentative_effects": list(getattr(self, "tentative", [])),
-            "misfit_share_explained": getattr(self, "misfit_share_explained", None), "rms_before": self.rms_before, "rms_after": self.rms_after,
+            "effects": list(self.effects), "tentative_effects": list(self.tentative),
+            "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
             "validation": list(self.validation), "steps": steps, "untested": dict(self.untested),
@@ -147,7 +152,7 @@ class Diagnosis:
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
-        tent = getattr(self, "tentative", [])
+        tent = self.tentative
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}"
                      + (f" (tentative, not named: {', '.join(tent)})" if tent else "") + "; held-out RMS "
                      f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")
@@ -240,9 +245,7 @@ class Diagnosis:
             a.set(xlabel=f"input v [{iu}]", ylabel=f"output y [{ou}]",
                   title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
             a.legend(fontsize=8, loc="upper left", markerscale=4)
-        tent = list(getattr(self, "tentative", []))
-        fig.suptitle("Loops on the held-out part: " + " + ".join(["PI"] + (tent or list(self.effects)))
-                     + (" (tentative, not named)" if tent else ""))
+        fig.suptitle("Loops on the held-out part: " + self._final_name())
         out["loops"] = fig
 
         # residual before and after each step, noise floor drawn
@@ -255,10 +258,8 @@ class Diagnosis:
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
             labels.append(lab + (" [tentative]" if st.get("tentative") else ""))
-        tent = list(getattr(self, "tentative", []))
-        final_name = " + ".join(["PI"] + (tent or list(self.effects))) + (" (tentative, not named)" if tent else "")
         if len(preds) > len(labels):
-            labels.append(f"final: {final_name} (after revision)")
+            labels.append(f"final: {self._final_name()} (after revision)")
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)

@@ -117,6 +117,28 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     step_preds = [cur.prediction]
     stopped = "no candidate effect to try"
     ev = first_ev
+
+    def add_step(part, st, pt, prev, trials, step_trial, paired=None):
+        """Record a step: `part` added, fit `pt` of structure `st`, judged against
+        the model `prev` before it; the signature is the evidence of the residual
+        the step started from (`ev`, `cur`)."""
+        before, after = rms_val(prev), rms_val(pt)
+        ext = PartsModel(st, pt.values, pt.theta, ctx, pt.names).describe()
+        step_ev = {"signature": _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma),
+                   "extension": [d for d in ext if d["kind"] == part.kind][0],
+                   "held_out_gain_noise_variances": round((before ** 2 - after ** 2) / sigma ** 2, 3),
+                   "bic_change": round(pt.bic - prev.bic, 1)}
+        if paired is not None:
+            step_ev["paired"] = paired
+        step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
+        steps.append({"effect": part.effect, "rms_before": before, "rms_after": after,
+                      "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * after / rec.y_span,
+                      "evidence": step_ev})
+        chosen.append(part.effect)
+        chosen_kinds.append(part.kind)
+        step_trials.append(step_trial)
+        step_preds.append(pt.prediction)
+
     while candidates and len(chosen) < max_effects:
         cur_val = rms_val(cur)
         trials = {}
@@ -182,88 +204,58 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 after = _signature_of(part, after_ev, rec, rec.y - pt.prediction, pt.prediction, sigma)["statistic"]
                 if before > 0 and after <= (1.0 - OWN_DROP) * before:
                     ok.append(j)
-        pair = _pair_step(vp, ctx, rec, struct, cur, trials, judged, ok, ev, sigma, rms_val, cur_val, excess, say, tick)
+        pair = _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick)
         if pair is not None:
             (ka, kb), pt_pair, st_pair = pair
-            for k, (pt_k, rv_k) in ((ka, (trials[ka][2], trials[ka][3])), (kb, (pt_pair, rms_val(pt_pair)))):
-                part = trials[k][0]
-                before = cur_val if k == ka else trials[ka][3]
-                step_ev = {"signature": _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma),
-                           "extension": [d for d in PartsModel(trials[k][1] if k == ka else st_pair, pt_k.values,
-                                                               pt_k.theta, ctx, pt_k.names).describe()
-                                         if d["kind"] == k][0],
-                           "held_out_gain_noise_variances": round((cur_val ** 2 - rms_val(pt_pair) ** 2) / sigma ** 2, 3),
-                           "bic_change": round(pt_pair.bic - cur.bic, 1),
-                           "paired": (f"fitted jointly with {PARTS[kb].effect} ({kb}): {part.effect} alone fits the "
-                                      "training part best but does not carry to the held-out part"
-                                      if k == ka else f"fitted jointly with {PARTS[ka].effect} ({ka})"),
-                           "candidates": {kk: round(tr[3], 6) for kk, tr in trials.items()}}
-                steps.append({"effect": part.effect, "rms_before": before, "rms_after": rv_k,
-                              "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * rv_k / rec.y_span,
-                              "evidence": step_ev})
-                chosen.append(part.effect)
-                chosen_kinds.append(k)
-                step_trials.append({k: rv_k})
-                step_preds.append(pt_k.prediction)
-            rv = rms_val(pt_pair)
-            say(f"added {PARTS[ka].effect} + {PARTS[kb].effect} ({ka} + {kb}) jointly: held-out RMS "
-                f"{cur_val:.4g} -> {rv:.4g}")
+            lead, lead_st, lead_pt, _ = trials[ka]
+            partner = trials[kb][0]
+            # two steps: the lead alone, then the pair (each against the model before it)
+            add_step(lead, lead_st, lead_pt, cur, trials, {ka: rms_val(lead_pt)},
+                     paired=(f"fitted jointly with {partner.effect} ({kb}): {lead.effect} alone fits the "
+                             "training part best but does not carry to the held-out part"))
+            add_step(partner, st_pair, pt_pair, lead_pt, trials, {kb: rms_val(pt_pair)},
+                     paired=f"fitted jointly with {lead.effect} ({ka})")
+            say(f"added {lead.effect} + {partner.effect} ({ka} + {kb}) jointly: held-out RMS "
+                f"{cur_val:.4g} -> {rms_val(pt_pair):.4g}")
             struct, cur = st_pair, pt_pair
-            ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
-            if rv <= EXPLAINED * sigma and not any(x["present"] for x in ev.values()):
-                stopped = "the residual is at the noise floor with no signature left"
+        else:
+            if not ok:
+                g, kind, dbic, sig_ok = judged[0]
+                part = trials[kind][0]
+                why = []
+                if g < MIN_GAIN:
+                    why.append(f"lowers the held-out mean square by {g:.2f} noise variances (needs {MIN_GAIN})")
+                if dbic >= 0:
+                    why.append(f"raises the BIC by {dbic:.1f}")
+                if not sig_ok:
+                    why.append("its signature is absent from the residual")
+                if g < MIN_SHARE * excess:
+                    why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
+                               f"(needs {100 * MIN_SHARE:.0f} %, or {100 * MIN_SHARE_OWN:.0f} % and a third of "
+                               "its own signature)")
+                stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
+                say(stopped)
                 break
-            continue
-        if not ok:
-            g, kind, dbic, sig_ok = judged[0]
-            part = trials[kind][0]
-            why = []
-            if g < MIN_GAIN:
-                why.append(f"lowers the held-out mean square by {g:.2f} noise variances (needs {MIN_GAIN})")
-            if dbic >= 0:
-                why.append(f"raises the BIC by {dbic:.1f}")
-            if not sig_ok:
-                why.append("its signature is absent from the residual")
-            if g < MIN_SHARE * excess:
-                why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
-                           f"(needs {100 * MIN_SHARE:.0f} %, or {100 * MIN_SHARE_OWN:.0f} % and a third of "
-                           "its own signature)")
-            stopped = f"no remaining effect pays: the best, {part.effect} ({kind}), " + " and ".join(why or ["-"])
-            say(stopped)
-            break
-        # Occam at each step (as in the revision): of acceptable parts whose held-out
-        # mean square is within PARSIMONY noise variances of the best, the one with
-        # the fewest nonlinear parameters (a dead time and a resonance that fit a
-        # delayed record equally well: the dead time)
-        top = ok[0][0]
-        close = [j for j in ok if top - j[0] <= PARSIMONY]
-        gain, kind, dbic, _ = min(close, key=lambda j: (len(trials[j[1]][0].parameters(ctx, set(trials[j[1]][1].kinds))),
-                                                         -j[0]))
-        part, st, pt, rv = trials[kind]
-        # joint refit of every nonlinear parameter, warm-started
-        n_par = len(st.parameters(ctx))
-        if n_par > len(part.parameters(ctx, set(st.kinds))):
-            joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
-            # kept when it fits the training part better without losing on the held-out part
-            if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
-                pt = joint
-        rv = rms_val(pt)
-        ext = PartsModel(st, pt.values, pt.theta, ctx, pt.names).describe()
-        step_ev = {"signature": _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma), "extension": [d for d in ext if d["kind"] == part.kind][0],
-                   "held_out_gain_noise_variances": round((cur_val ** 2 - rv ** 2) / sigma ** 2, 3),
-                   "bic_change": round(pt.bic - cur.bic, 1),
-                   "candidates": {k: round(tr[3], 6) for k, tr in trials.items()}}
-        steps.append({"effect": part.effect, "rms_before": cur_val, "rms_after": rv,
-                      "rms_before_pct": 100.0 * cur_val / rec.y_span, "rms_after_pct": 100.0 * rv / rec.y_span,
-                      "evidence": step_ev})
-        chosen.append(part.effect)
-        chosen_kinds.append(part.kind)
-        step_trials.append({k: tr[3] for k, tr in trials.items()})
-        say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rv:.4g}")
-        struct, cur = st, pt
-        step_preds.append(pt.prediction)
+            # Occam at each step (as in the revision): of acceptable parts whose held-out
+            # mean square is within PARSIMONY noise variances of the best, the one with
+            # the fewest nonlinear parameters (a dead time and a resonance that fit a
+            # delayed record equally well: the dead time)
+            top = ok[0][0]
+            close = [j for j in ok if top - j[0] <= PARSIMONY]
+            kind = min(close, key=lambda j: (_n_parameters(trials[j[1]][0], trials[j[1]][1], ctx), -j[0]))[1]
+            part, st, pt, _ = trials[kind]
+            # joint refit of every nonlinear parameter, warm-started
+            n_par = len(st.parameters(ctx))
+            if n_par > _n_parameters(part, st, ctx):
+                joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
+                # kept when it fits the training part better without losing on the held-out part
+                if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
+                    pt = joint
+            add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()})
+            say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
+            struct, cur = st, pt
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
-        if rv <= EXPLAINED * sigma and not any(x["present"] for x in ev.values()):
+        if rms_val(cur) <= EXPLAINED * sigma and not any(x["present"] for x in ev.values()):
             stopped = "the residual is at the noise floor with no signature left"
             break
     else:
@@ -331,11 +323,16 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 _final_pred=cur.prediction, _step_preds=step_preds)
 
 
+def _n_parameters(part, structure, ctx):
+    """How many nonlinear parameters `part` has within `structure`."""
+    return len(part.parameters(ctx, set(structure.kinds)))
+
+
 #: partners tried with the lead effect of a step (see :func:`_pair_step`)
 PAIR_PARTNERS = 3
 
 
-def _pair_step(vp, ctx, rec, struct, cur, trials, judged, ok, ev, sigma, rms_val, cur_val, excess, say, tick):
+def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick):
     """Two effects added together when one hides the other.
 
     The *lead* is the candidate that lowers the training BIC most among those
@@ -369,8 +366,7 @@ def _pair_step(vp, ctx, rec, struct, cur, trials, judged, ok, ev, sigma, rms_val
         start[kind] = dict(trials[kind][2].values[kind])
         for p, q in st.parameters(ctx):
             start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
-        kinds = set(st.kinds)
-        n_new = len(lead_part.parameters(ctx, kinds)) + len(part.parameters(ctx, kinds))
+        n_new = _n_parameters(lead_part, st, ctx) + _n_parameters(part, st, ctx)
         try:
             pt = vp.optimise(st, start, free={lead, kind}, max_evaluations=10 * max(n_new, 1))
         except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
@@ -461,7 +457,7 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         # part with the fewest nonlinear parameters (the current one on a tie)
         lowest = min(rms_val(p_) ** 2 for _, _, p_ in tried)
         close = [c for c in tried if rms_val(c[2]) ** 2 <= lowest + PARSIMONY * s2]
-        best = min(close, key=lambda c: (len(PARTS[c[0]]().parameters(ctx, set(c[1].kinds))), c[0] != kind,
+        best = min(close, key=lambda c: (_n_parameters(PARTS[c[0]](), c[1], ctx), c[0] != kind,
                                          rms_val(c[2])))
         if best[0] != kind:
             alt, st, pt = best
