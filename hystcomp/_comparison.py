@@ -10,7 +10,7 @@ from concurrent.futures import as_completed
 
 import numpy as np
 
-from ._validation import as_count, as_pair, as_signal, check_choice
+from ._validation import as_choices, as_count, as_pair, as_signal, check_choice
 
 def loop_width(reference, output, n_bins=100):
     """Width of the output-vs-reference loop.
@@ -320,18 +320,7 @@ def plot_comparison(comparison, title=None, scenarios=None, time_window=None):
         raise TypeError(f"Parameter comparison is {comparison!r} ({type(comparison).__name__}) but should "
                         "be a Comparison (the result of compare)")
     have = [row["scenario"] for row in comparison.rows]
-    if scenarios is None:
-        names = have
-    else:
-        if isinstance(scenarios, str):
-            scenarios = [scenarios]
-        try:
-            names = list(scenarios)
-        except TypeError:
-            raise TypeError(f"Parameter scenarios is {scenarios!r} but should be an iterable of scenario "
-                            "names") from None
-        for name in names:
-            check_choice(name, "scenarios", have)
+    names = as_choices(scenarios, "scenarios", have)
     if time_window is not None:
         time_window = as_pair(time_window, "time_window")
     fig, axes = new_figure(1, 3, size=(15, 4.6))

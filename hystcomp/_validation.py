@@ -146,6 +146,29 @@ def check_choice(value, name, choices):
     return value
 
 
+def as_choices(value, name, choices):
+    """A list of names, each one of `choices`: a single name or an iterable of
+    them; None gives every choice, in order.
+
+    Examples
+    --------
+    >>> as_choices("a", "names", ("a", "b")), as_choices(None, "names", ("a", "b"))
+    (['a'], ['a', 'b'])
+    """
+    if value is None:
+        return list(choices)
+    if isinstance(value, str):
+        value = [value]
+    try:
+        names = list(value)
+    except TypeError:
+        raise TypeError(f"Parameter {name} is {value!r} but should be a name or an iterable of names "
+                        f"from {list(choices)}") from None
+    for n in names:
+        check_choice(n, name, choices)
+    return names
+
+
 def check_output_folder(path, name="out"):
     """Make sure `path` is (or can be created as) a writable folder; created if missing.
 

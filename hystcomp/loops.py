@@ -47,7 +47,7 @@ import numpy as np
 import control as ct
 
 from . import _loop_kernels as _lk
-from ._validation import as_float_array, as_scalar, as_signal, check_choice
+from ._validation import as_choices, as_float_array, as_scalar, as_signal, check_choice
 from .iosys import (
     CompensatorBlock, SaturatedPID, WiringError, compensator_system, discretize, hysteresis_system,
     initial_state, interconnect, pid,
@@ -437,19 +437,9 @@ def build_scenarios(hysteresis, plant, controller=None, compensator=None, dt=Non
     >>> list(loops)                            # no controller: no feedback scenarios
     ['open_loop', 'feedforward']
     """
-    if scenarios is None:
-        names = SCENARIOS
-    else:
-        if isinstance(scenarios, str):
-            scenarios = [scenarios]
-        try:
-            names = list(scenarios)
-        except TypeError:
-            raise TypeError(f"Parameter scenarios is {scenarios!r} but should be an iterable of names "
-                            f"from {SCENARIOS}") from None
+    names = as_choices(scenarios, "scenarios", SCENARIOS)
     out = {}
     for s in names:
-        check_choice(s, "scenarios", SCENARIOS)
         need_ctrl, need_comp = _NEEDS[s]
         if scenarios is None and ((need_ctrl and controller is None) or (need_comp and compensator is None)):
             continue
