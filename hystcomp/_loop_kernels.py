@@ -39,8 +39,8 @@ B_EXACT = 3   # exact inverse (inverse_solve)
 
 
 @njit(cache=True, nogil=True)
-def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev,
-               bin_, bout, info):
+def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state,
+               xprev, bin_, bout, info):
     """One sample of a hysteresis or compensator block; `state` is updated
     in place, returns (output, new xprev)."""
     bin_[0] = x
@@ -52,7 +52,7 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, s
         xprev = _k.stop_sum(bin_, r, p, p0, state, xprev, bout)
     else:
         xprev = _k.inverse_solve(fam, bin_, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
-                                 lo, hi, 1e-14, bout, info)
+                                 lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
@@ -61,13 +61,13 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, s
 # loop: a wrapper compiled on its own would have LLVM optimise the kernel it
 # calls once more (first-call compilation time).
 @njit(cache=True, nogil=True, inline="always")
-def step_none(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+def step_none(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """No block (never called: the loops test ``use_comp``)."""
     return x, xprev
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """PI forward (identity or linear envelope)."""
     bin_[0] = x
     _k.pi_sum(bin_, r, p, p0, state, 1.0 if kl == _k.IDENTITY else pl[0], bout)
@@ -75,7 +75,7 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, stat
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
     """Symmetric mGPI forward, Tanh or Atanh envelope, one sample per step
     (the scalar `play_sum_closed`: same envelope values as `MGPI.simulate`'s
@@ -87,7 +87,7 @@ def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo,
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Symmetric mGPI forward, any compiled envelope."""
     bin_[0] = x
@@ -96,7 +96,7 @@ def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Asymmetric mGPI forward, closed-form envelopes."""
     bin_[0] = x
@@ -105,7 +105,7 @@ def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Asymmetric mGPI forward, any compiled envelopes."""
     bin_[0] = x
@@ -114,7 +114,7 @@ def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, l
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """Stop-type PI forward."""
     bin_[0] = x
     xprev = _k.stop_sum(bin_, r, p, p0, state, xprev, bout)
@@ -122,48 +122,48 @@ def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, st
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                   info):
     """Exact inverse of a PI model."""
     bin_[0] = x
-    xprev = _k.play_solve_pi(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_pi(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_exact_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_exact_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                     info):
     """Exact inverse of a symmetric tanh mGPI (the kernel of `ExactInverse.simulate`)."""
     bin_[0] = x
-    xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Exact inverse of a symmetric mGPI with a Linear or Atanh envelope."""
     bin_[0] = x
-    xprev = _k.play_solve_closed(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_closed(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Exact inverse of a symmetric mGPI with any compiled envelope."""
     bin_[0] = x
-    xprev = _k.play_solve_general(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_general(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
 @njit(cache=True, nogil=True, inline="always")
-def step_exact_other(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+def step_exact_other(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
     """Exact inverse of the other families (asymmetric mGPI, GPI, stop)."""
     bin_[0] = x
     xprev = _k.inverse_solve_other(fam, bin_, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
-                                   lo, hi, 1e-14, bout, info)
+                                   lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
@@ -225,9 +225,9 @@ def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
              Ap, Bp, Cp, Dp, xp,
              Ac, Bc, Cc, Dc, xc, limited, ulo, uhi, pid_dt,
              h_code, h_fam, h_r, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi,
-             h_state, h_xprev,
+             h_rtol, h_state, h_xprev,
              c_code, c_fam, c_r, c_p, c_p0, c_kl, c_pl, c_kr, c_pr, c_kh, c_ph, c_hs, c_lo, c_hi,
-             c_state, c_xprev,
+             c_rtol, c_state, c_xprev,
              y_out, w_out, v_out, info):
     """Run a loop over the reference samples; states are updated in place.
     Returns the final (h_xprev, c_xprev); info[0] counts clipped
@@ -260,13 +260,13 @@ def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
             u = u + uc if use_ff else uc
         if use_comp:
             v, c_xprev = _c_step(c_code, c_fam, kcomp * u, c_r, c_p, c_p0, c_kl, c_pl, c_kr, c_pr,
-                                 c_kh, c_ph, c_hs, c_lo, c_hi, c_state, c_xprev, bin_, bout, binfo)
+                                 c_kh, c_ph, c_hs, c_lo, c_hi, c_rtol, c_state, c_xprev, bin_, bout, binfo)
             if c_code == B_EXACT:
                 n_clip += binfo[0]
         else:
             v = u
         w, h_xprev = _h_step(h_code, h_fam, v, h_r, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
-                             h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_xprev, bin_, bout, binfo)
+                             h_kh, h_ph, h_hs, h_lo, h_hi, h_rtol, h_state, h_xprev, bin_, bout, binfo)
         y_out[k] = y0 + Dp[0, 0] * w
         w_out[k] = w
         v_out[k] = v
