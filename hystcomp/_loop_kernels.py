@@ -77,12 +77,18 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol
 @njit(cache=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Tanh or Atanh envelope, one sample per step
-    (the scalar `play_sum_closed`: same envelope values as `MGPI.simulate`'s
-    SIMD kernel, ordered sum; one step and one compiled loop copy for a tanh
-    actuator with or without the analytic compensator, an Atanh envelope)."""
+    """Symmetric mGPI with a Tanh or Atanh envelope: the forward, one sample
+    per step (the scalar `play_sum_closed`: same envelope values as
+    `MGPI.simulate`'s SIMD kernel, ordered sum), and the exact inverse of a
+    tanh mGPI (`play_solve_tanh`, the kernel of `ExactInverse.simulate`).
+    One step for both, so that a tanh actuator's loops without a compensator,
+    with the analytic one (Atanh) and with the exact one share one compiled
+    loop copy (the demo's loops: one loop compilation instead of two)."""
     bin_[0] = x
-    _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
+    if code == B_EXACT:
+        xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
+    else:
+        _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
 
 
@@ -127,15 +133,6 @@ def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi
     """Exact inverse of a PI model."""
     bin_[0] = x
     xprev = _k.play_solve_pi(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
-    return bout[0], xprev
-
-
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
-                    info):
-    """Exact inverse of a symmetric tanh mGPI (the kernel of `ExactInverse.simulate`)."""
-    bin_[0] = x
-    xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
@@ -185,7 +182,7 @@ def step_kernel(code, fam, kl, kr):
     if kl == _k.IDENTITY:
         return step_exact_pi
     if kl == _k.TANH:
-        return step_exact_tanh
+        return step_play_closed   # with the tanh forward (one loop copy for both)
     return step_exact_closed if kl in (_k.LINEAR, _k.ATANH) else step_exact_general
 
 
