@@ -38,7 +38,7 @@ B_STOP = 2    # stop-type PI forward (stop_sum)
 B_EXACT = 3   # exact inverse (inverse_solve)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state,
                xprev, bin_, bout, info):
     """One sample of a hysteresis or compensator block; `state` is updated
@@ -60,13 +60,13 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, r
 # arguments a step does not need are ignored).  Inlined by numba into the
 # loop: a wrapper compiled on its own would have LLVM optimise the kernel it
 # calls once more (first-call compilation time).
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_none(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """No block (never called: the loops test ``use_comp``)."""
     return x, xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """PI forward (identity or linear envelope)."""
     bin_[0] = x
@@ -74,7 +74,7 @@ def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
     """Symmetric mGPI with a Tanh or Atanh envelope: the forward, one sample
@@ -92,7 +92,7 @@ def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo,
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Symmetric mGPI forward, any compiled envelope."""
@@ -101,7 +101,7 @@ def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Asymmetric mGPI forward, closed-form envelopes."""
@@ -110,7 +110,7 @@ def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Asymmetric mGPI forward, any compiled envelopes."""
@@ -119,7 +119,7 @@ def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, l
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """Stop-type PI forward."""
     bin_[0] = x
@@ -127,7 +127,7 @@ def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rt
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                   info):
     """Exact inverse of a PI model."""
@@ -136,7 +136,7 @@ def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Exact inverse of a symmetric mGPI with a Linear or Atanh envelope."""
@@ -145,7 +145,7 @@ def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Exact inverse of a symmetric mGPI with any compiled envelope."""
@@ -154,7 +154,7 @@ def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, l
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def step_exact_other(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
     """Exact inverse of the other families (asymmetric mGPI, GPI, stop)."""
@@ -186,7 +186,7 @@ def step_kernel(code, fam, kl, kr):
     return step_exact_closed if kl in (_k.LINEAR, _k.ATANH) else step_exact_general
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _matvec_add(A, x, B, u, out):
     n = A.shape[0]
     for i in range(n):
@@ -196,7 +196,7 @@ def _matvec_add(A, x, B, u, out):
         out[i] = s + B[i, 0] * u
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _copy(src, dst):
     # element by element: a slice assignment compiles numba's shape-mismatch
     # error message (string formatting), seconds of first-call compilation
@@ -204,7 +204,7 @@ def _copy(src, dst):
         dst[i] = src[i]
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _dot(C, x):
     s = 0.0
     for j in range(C.shape[1]):
