@@ -161,7 +161,8 @@ _step0 = _step1 = _step2 = None
 
 def _run_template(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M, N, O,
                   A, B, C, D, x, h_index, h_slot, h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
-                  h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift,
+                  h_kh, h_ph, h_hs, h_lo, h_hi, h_rtol, h_state, h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt,
+                  shift,
                   y_out, x_out):
     """The compiled interconnection; hystcomp block h runs through the step
     function bound to `_step<h_slot[h]>` (see `_run_kernel`)."""
@@ -201,17 +202,17 @@ def _run_template(r_in, kinds, ft_order, nft, x_off, nx, u_off, nu, y_off, ny, M
                 if slot == 0:
                     out, h_xprev[h] = _step0(
                         h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
-                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h], h_rtol[h],
                         st, h_xprev[h], bin_, bout, binfo)
                 elif slot == 1:
                     out, h_xprev[h] = _step1(
                         h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
-                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h], h_rtol[h],
                         st, h_xprev[h], bin_, bout, binfo)
                 else:
                     out, h_xprev[h] = _step2(
                         h_code[h], h_fam[h], h_gain[h] * U[u_off[j]], h_r[h, :nr], h_p[h, :nr], h_p0[h],
-                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h],
+                        h_kl[h], h_pl[h], h_kr[h], h_pr[h], h_kh[h], h_ph[h], h_hs[h], h_lo[h], h_hi[h], h_rtol[h],
                         st, h_xprev[h], bin_, bout, binfo)
                 Y[y_off[j]] = h_outgain[h] * out
             else:
@@ -443,7 +444,7 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
     h_kl, h_kr, h_kh = (np.zeros(nh, np.int64) for _ in range(3))
     h_r, h_p = np.zeros((nh, maxr)), np.zeros((nh, maxr))
     h_pl, h_pr, h_ph = (np.zeros((nh, maxprm)) for _ in range(3))
-    h_p0, h_hs, h_lo, h_hi, h_xprev, h_gain, h_outgain = (np.zeros(nh) for _ in range(7))
+    h_p0, h_hs, h_lo, h_hi, h_rtol, h_xprev, h_gain, h_outgain = (np.zeros(nh) for _ in range(8))
     shift = np.zeros(xo)
     for leaf in leaves:
         if leaf.kind == LEAF_HYST:
@@ -465,7 +466,7 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
             h_r[h, :sp[2].size], h_p[h, :sp[3].size] = sp[2], sp[3]
             h_p0[h], h_kl[h], h_kr[h], h_kh[h] = sp[4], sp[5], sp[7], sp[9]
             h_pl[h, :sp[6].size], h_pr[h, :sp[8].size], h_ph[h, :sp[10].size] = sp[6], sp[8], sp[10]
-            h_hs[h], h_lo[h], h_hi[h] = sp[11], sp[12], sp[13]
+            h_hs[h], h_lo[h], h_hi[h], h_rtol[h] = sp[11], sp[12], sp[13], sp[14]
             kst, xprev = _split_state(sp, x[xs])
             h_ns[h] = kst.size
             h_state[h, :kst.size] = kst
@@ -483,7 +484,7 @@ def fast_response(sys, timepts, inputs, initial_state=0, params=None):
     run(np.ascontiguousarray(u.T), kinds, order, nft, x_off, np.array([lf.nx for lf in leaves], np.int64),
         u_off, np.array([lf.nu for lf in leaves], np.int64), y_off, np.array([lf.ny for lf in leaves], np.int64),
         np.ascontiguousarray(M), np.ascontiguousarray(N), np.ascontiguousarray(O), A, B, C, D, x, h_index, h_slot,
-        h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi, h_state,
+        h_code, h_fam, h_r, h_nr, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi, h_rtol, h_state,
         h_ns, h_xprev, h_gain, h_outgain, limits, pid_dt, shift, y_out, x_out)
     return ct.TimeResponseData(t, y_out, x_out, u, output_labels=sys.output_labels,
                                state_labels=sys.state_labels, input_labels=sys.input_labels,

@@ -82,7 +82,7 @@ _SUM_FLAGS = {"reassoc", "contract"}
 _vd = None
 
 
-@njit(cache=True, nogil=True, fastmath=_SUM_FLAGS)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS)
 def pi_sum(v, r, p, p0, z, scale, out):
     """PI model (eq. 18), scaled by `scale` (a Linear envelope):
     ``out = scale * (p0 v + sum_i p_i F_ri[v])``; `z` updated in place.
@@ -106,7 +106,7 @@ def pi_sum(v, r, p, p0, z, scale, out):
         out[k] = scale * (p0 * x + s)
 
 
-@njit(cache=True, nogil=True, fastmath=_SUM_FLAGS, error_model="numpy")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS, error_model="numpy")
 def play_sum_tanh(v, r, p, p0, z, kind, prm, out):
     """Symmetric mGPI with a Tanh envelope (eq. 25/49, gamma(x) = a tanh(b x + c)):
     ``out = a (p0 tanh(b v + c) + sum_i p_i tanh(b z_i + c))``; `z` updated
@@ -171,7 +171,7 @@ def run_play_sum(v, r, p, p0, z, kind, prm, out):
         kernel(v, r, p, p0, z, kind, prm, out)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def play_sum(v, r, p, p0, z, kind, prm, out):
     """Sum of weighted enveloped plays: ``out = p0*g(v) + sum_i p_i g(F_ri[v])``.
 
@@ -218,7 +218,7 @@ def _play_sum_template(v, r, p, p0, z, kind, prm, out):
         out[k] = p0 * _vd(kind, prm, a, b, c, x)[0] + s
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def play_step(x, r, widen, z):
     """One sample of the plays (eq. 13): ``z_i <- max(x - r_i', min(x + r_i', z_i))``
     with ``r_i' = r_i + widen``; `z` updated in place.
@@ -235,7 +235,7 @@ def play_step(x, r, widen, z):
         z[i] = zi
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def play_states(v, r, z, out):
     """Play positions for every sample: ``out[k, i] = F_ri[v](t_k)``.
 
@@ -249,7 +249,7 @@ def play_states(v, r, z, out):
             out[k, i] = z[i]
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def two_input_play_sum(a, b, r, p, w, out):
     """Generalized plays (eq. 20) given ``a = gl(v)``, ``b = gr(v)``:
 
@@ -272,7 +272,7 @@ def two_input_play_sum(a, b, r, p, w, out):
         out[k] = s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def two_input_play_states(a, b, r, w, out):
     """Generalized play outputs for every sample (see `two_input_play_sum`)."""
     n = a.size
@@ -288,14 +288,14 @@ def two_input_play_states(a, b, r, w, out):
             out[k, i] = wi
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def mplay_sum_closed(v, r, p, w, kl, pl, kr, pr, out):
     """`mplay_sum` for the built-in closed-form envelopes (Identity, Linear,
     Tanh, Atanh on both sides)."""
     _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, False)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def mplay_sum_general(v, r, p, w, kl, pl, kr, pr, out):
     """`mplay_sum` for any compiled envelopes."""
     _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, True)
@@ -309,7 +309,7 @@ def mplay_sum_kernel(kl, kr):
     return mplay_sum_general
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def mplay_sum(v, r, p, w, kl, pl, kr, pr, out):
     """Modified generalized plays with two envelopes (eq. 23).
 
@@ -324,7 +324,7 @@ def mplay_sum(v, r, p, w, kl, pl, kr, pr, out):
         mplay_sum_general(v, r, p, w, kl, pl, kr, pr, out)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, gen):
     n = v.size
     N = r.size
@@ -340,7 +340,7 @@ def _mplay_sum_body(v, r, p, w, kl, pl, kr, pr, out, gen):
         out[k] = s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def mplay_states(v, r, w, kl, pl, kr, pr, out):
     n = v.size
     N = r.size
@@ -354,7 +354,7 @@ def mplay_states(v, r, w, kl, pl, kr, pr, out):
             out[k, i] = wi
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def bounded_play_states(lower, upper, w, out):
     """``w_i <- max(lower[k, i], min(upper[k, i], w_i))`` for given boundaries.
 
@@ -374,7 +374,7 @@ def bounded_play_states(lower, upper, w, out):
             out[k, i] = wi
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def stop_states(v, r, w, vprev, out):
     """Stop operators (eq. 15-16): ``w_i <- clamp(w_i + v - v_prev, -r_i, r_i)``.
 
@@ -394,7 +394,7 @@ def stop_states(v, r, w, vprev, out):
     return vprev
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def stop_sum(v, r, p, p0, w, vprev, out):
     n = v.size
     N = r.size

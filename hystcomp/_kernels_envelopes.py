@@ -30,7 +30,7 @@ CUSTOM = -1
 _INF = np.inf
 
 
-def _specialise(template, name, doc=None, **bindings):
+def _specialise(template, name, doc=None, callable_from_python=True, **bindings):
     """A compiled copy of the plain Python function `template` in which the
     global names in `bindings` refer to the given objects (other compiled
     functions).
@@ -42,6 +42,8 @@ def _specialise(template, name, doc=None, **bindings):
     caller that passes one cannot be cached).  Each copy is its own numba
     function named `name` (its own on-disk cache entry), compiled on its first
     call only; it sees the module's globals as they are when it is made.
+    `callable_from_python` False: no CPython wrapper (a helper that only
+    compiled code calls; less to compile).
     """
     glb = dict(template.__globals__)
     glb.update(bindings)
@@ -49,7 +51,7 @@ def _specialise(template, name, doc=None, **bindings):
     func.__qualname__ = name
     func.__module__ = template.__module__
     func.__doc__ = doc if doc is not None else template.__doc__
-    return njit(cache=True, nogil=True)(func)
+    return njit(cache=True, nogil=True, no_cfunc_wrapper=True, no_cpython_wrapper=not callable_from_python)(func)
 
 
 # ----------------------------------------------------------------------------
@@ -104,7 +106,7 @@ _LN2 = 0.6931471805599453
 _INV_LN2 = 1.4426950408889634
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _tanh(x):
     """tanh(x) without a libm call or a branch, so that a loop over operators
     runs in SIMD lanes (the tanh mGPI forward, `play_sum_tanh`).
@@ -136,7 +138,7 @@ def _tanh(x):
     return _fma(E, sm, -fO * sp) / _fma(E, sp, -fO * sm)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _poly_value(prm, x):
     # prm = [lo, hi, c0, c1, ..., cn]  (c_k multiplies x**k)
     if x < prm[0]:
@@ -150,7 +152,7 @@ def _poly_value(prm, x):
     return s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _poly_derivative(prm, x):
     if x < prm[0] or x > prm[1]:
         return _INF
@@ -161,7 +163,7 @@ def _poly_derivative(prm, x):
     return s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _poly_inverse(prm, y):
     # safeguarded Newton on [lo, hi]
     lo = prm[0]
@@ -191,7 +193,7 @@ def _poly_inverse(prm, y):
     return x
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _base_value(kind, prm, x):
     if kind == IDENTITY:
         return x
@@ -209,7 +211,7 @@ def _base_value(kind, prm, x):
     return _poly_value(prm, x)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _base_derivative(kind, prm, x):
     if kind == IDENTITY:
         return 1.0
@@ -226,7 +228,7 @@ def _base_derivative(kind, prm, x):
     return _poly_derivative(prm, x)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _base_inverse(kind, prm, y):
     if kind == IDENTITY:
         return y
@@ -244,7 +246,7 @@ def _base_inverse(kind, prm, y):
     return _poly_inverse(prm, y)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def env_value(kind, prm, x):
     """Value of a compiled envelope; kind INVERSE_OF wraps a base kind:
     prm = [inner kind, inner params...]."""
@@ -253,7 +255,7 @@ def env_value(kind, prm, x):
     return _base_value(kind, prm, x)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def env_derivative(kind, prm, x):
     if kind == INVERSE_OF:
         ik = int(prm[0])
@@ -261,7 +263,7 @@ def env_derivative(kind, prm, x):
     return _base_derivative(kind, prm, x)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def env_inverse(kind, prm, y):
     """Inverse of a compiled envelope; +-inf outside its range."""
     if kind == INVERSE_OF:
@@ -279,7 +281,7 @@ def env_inverse(kind, prm, y):
 # reach the general code, and only in loops compiled with gen=True.
 # (numba-level inlining: LLVM alone leaves the tanh paths ~30 % slower; it
 # costs first-use compilation time, so the number of call sites is kept small.)
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _prm3(prm):
     a = prm[0] if prm.size > 0 else 0.0
     b = prm[1] if prm.size > 1 else 0.0
@@ -287,7 +289,7 @@ def _prm3(prm):
     return a, b, c
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _fval(kind, prm, a, b, c, x, gen):
     """env_value(kind, prm, x) with (a, b, c) = _prm3(prm).  `gen` False
     promises a built-in closed-form kind (Identity, Linear, Tanh, Atanh): the
@@ -310,7 +312,7 @@ def _fval(kind, prm, a, b, c, x, gen):
     return np.nan
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _fval_der(kind, prm, a, b, c, x, gen):
     """_val_der(kind, prm, x) with (a, b, c) = _prm3(prm); `gen` as in `_fval`."""
     if kind == TANH:
@@ -332,12 +334,12 @@ def _fval_der(kind, prm, a, b, c, x, gen):
     return np.nan, np.nan
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _slow_value(kind, prm, x):
     return env_value(kind, prm, x)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _slow_val_der(kind, prm, x):
     return env_value(kind, prm, x), env_derivative(kind, prm, x)
 
@@ -352,33 +354,33 @@ def _slow_val_der(kind, prm, x):
 # (the same, compiled as functions) serve everywhere else: the forward sums
 # (LLVM inlines them and drops the unused derivative: same speed, half the
 # compilation time) and the solvers' once-per-iteration evaluations.
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _vd_identity(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of the identity envelope (PI)."""
     return x, 1.0
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _vd_closed(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of a built-in closed-form envelope (Identity, Linear,
     Tanh, Atanh); NaN for the others."""
     return _fval_der(kind, prm, a, b, c, x, False)
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _vd_general(kind, prm, a, b, c, x):
     """(g(x), g'(x)) of any compiled envelope."""
     return _fval_der(kind, prm, a, b, c, x, True)
 
 
-_vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call")
-_vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call")
+_vd_closed_call = _specialise(_vd_closed.py_func, "_vd_closed_call", callable_from_python=False)
+_vd_general_call = _specialise(_vd_general.py_func, "_vd_general_call", callable_from_python=False)
 
 
 # ----------------------------------------------------------------------------
 # SIMD lanes of the branch-free kernels (play_sum_tanh, play_solve_pi/_tanh)
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True, inline="always")
 def _fill_lanes(r, p, p0, z, z0, rr, pp, zz):
     """Fill the lanes (rr, pp, zz) of a branch-free kernel, of size M = the
     next multiple of 4 above N: lane 0 the p0 term (threshold 0, position
@@ -401,7 +403,7 @@ def _fill_lanes(r, p, p0, z, z0, rr, pp, zz):
 # ----------------------------------------------------------------------------
 # operator step shared by the forward and inverse kernels
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _fmplay(x, ri, wi, kl, pl, al, bl, cl, kr, pr, ar, br, cr, gen):
     hi = _fval(kr, pr, ar, br, cr, x + ri, gen)
     if wi > hi:

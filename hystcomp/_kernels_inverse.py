@@ -31,13 +31,13 @@ FAM_GPI = 2     # generalized plays; state w; memoryless H(x) = hk(x)
 FAM_STOP = 3    # stops; state w, memoryless p0 x
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _val_der(kind, prm, x):
     a, b, c = _prm3(prm)
     return _fval_der(kind, prm, a, b, c, x, True)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _output_and_slopes(fam, x, xprev, r, p, p0, state,
                        kl, pl, kr, pr, kh, ph, hscale):
     """Model output for a new input x from the current state, with the
@@ -105,7 +105,7 @@ def _output_and_slopes(fam, x, xprev, r, p, p0, state,
     return y, sr, sl
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _advance(fam, x, xprev, r, state, kl, pl, kr, pr):
     """Update the state for the new input x (the forward step); families
     FAM_MPLAY, FAM_GPI and FAM_STOP (FAM_PLAY: in `_play_solve_template`)."""
@@ -136,7 +136,7 @@ def _advance(fam, x, xprev, r, state, kl, pl, kr, pr):
             state[i] = e
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit):
     """Next trial input: Newton with the one-sided slope on the side of the
     root, kept inside the bracket (lo, hi); returns (x_new, checked_limit)."""
@@ -156,7 +156,7 @@ def _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit):
     return xn, checked_limit
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _input_scale(r):
     """The model's input scale: its largest threshold (1 without a positive one)."""
     xs = 0.0
@@ -166,7 +166,7 @@ def _input_scale(r):
     return xs if xs > 0.0 else 1.0
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _shrink(f, x, lo, hi, xmin, xmax, xs):
     """Bracket update after evaluating f at x; returns (lo, hi, stop).  The
     bracket is narrow enough at ``1e-15 (xs + |x|)``, xs the model's input
@@ -218,7 +218,7 @@ def _play_eval_template(x, r, p, p0, g0, dg0, state, cache, dcache, sv, sd, kind
     return y, sr, sl
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _play_solve(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol, out, info):
     """`inverse_solve` for FAM_PLAY: three compiled copies, one per kind class
     (each is compiled on first use only; Python callers pick one through
@@ -328,7 +328,8 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
     return xprev
 
 
-@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"}, error_model="numpy")
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True, fastmath={"reassoc", "contract"},
+      error_model="numpy")
 def _tanh_eval(x, rr, pp, zz, a, b, c):
     """Output and one-sided slopes of a tanh mGPI for a new input x, branch-free
     over every operator (SIMD lanes, as `_kernels.play_sum_tanh`): the lanes
@@ -364,7 +365,7 @@ def _tanh_eval(x, rr, pp, zz, a, b, c):
     return a * y, ab * sr, ab * sl, ab * sra, ab * sla
 
 
-@njit(cache=True, nogil=True, fastmath={"reassoc", "contract"})
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True, fastmath={"reassoc", "contract"})
 def _pi_eval(x, rr, pp, zz, a, b, c):
     """`_tanh_eval` for the PI (identity envelope; a, b, c unused): output
     and one-sided slopes, before and after advancing the state to x."""
@@ -462,7 +463,7 @@ def _play_solve_lanes_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax,
     return xprev
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
                   xmin, xmax, rtol, out, info):
     """Exact inverse: for each target u[k] find x with Y(x; state) = u[k].
@@ -503,7 +504,7 @@ def inverse_kernel(fam, kind):
     return solve
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
                         xmin, xmax, rtol, out, info):
     """`inverse_solve` for the families FAM_MPLAY, FAM_GPI and FAM_STOP."""

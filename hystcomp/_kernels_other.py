@@ -52,7 +52,7 @@ RK_MAX = 256
 # ----------------------------------------------------------------------------
 # Preisach
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _level(x, vmin, h, n):
     """#{j : c_j <= x} with the centres c_j = vmin + (j + 1/2) h computed as
     `preisach_grid` does (exact at a centre; no int overflow for huge x)."""
@@ -72,7 +72,7 @@ def _level(x, vmin, h, n):
     return t
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _preisach_value(table, k, offset):
     s = offset
     for i in range(k.size):
@@ -80,7 +80,7 @@ def _preisach_value(table, k, offset):
     return s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _full_rows(k):
     L = 0
     while L < k.size and k[L] == L + 1:
@@ -88,7 +88,7 @@ def _full_rows(k):
     return L
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _preisach_move(k, Lc, L):
     """Apply a move of the input level from Lc to L; True if a relay switched."""
     changed = False
@@ -106,7 +106,7 @@ def _preisach_move(k, Lc, L):
     return changed
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def preisach_sum(x, vmin, h, table, offset, k, y):
     """Preisach output for every sample; `k` (int64 staircase) updated in place."""
     n = k.size
@@ -121,7 +121,7 @@ def preisach_sum(x, vmin, h, table, offset, k, y):
         y[t] = cur
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def preisach_segments(x, vmin, h, k, starts, states):
     """Segments of constant state: their start indices and staircases.
 
@@ -145,7 +145,7 @@ def preisach_segments(x, vmin, h, k, starts, states):
     return S
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def preisach_inverse(u, vmin, h, table, offset, k, edges, out, info):
     """Closest match per sample: the level whose output is nearest the target.
 
@@ -222,7 +222,7 @@ def preisach_inverse(u, vmin, h, table, offset, k, edges, out, info):
 # ----------------------------------------------------------------------------
 # Krasnoselskii-Pokrovskii
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _kp_diag(z, d, vmin, h, n, prefix):
     """Sum over the cells of diagonal d of mu * rho(z - m)."""
     M = n - d                                  # cells on the diagonal
@@ -241,7 +241,7 @@ def _kp_diag(z, d, vmin, h, n, prefix):
     return below - above + mu * (2.0 * (t - jr))
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _kp_value(z, vmin, h, prefix, offset):
     n = z.size
     s = offset
@@ -250,7 +250,7 @@ def _kp_value(z, vmin, h, prefix, offset):
     return s
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _kp_thresholds(n, h):
     """Thresholds of the KP diagonals: r_d = d h / 2 (the plays of the ridge operators)."""
     r = np.empty(n)
@@ -259,7 +259,7 @@ def _kp_thresholds(n, h):
     return r
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def kp_sum(x, vmin, h, prefix, offset, z, y):
     """KP output for every sample; play positions `z` (one per diagonal) updated."""
     r = _kp_thresholds(z.size, h)
@@ -268,7 +268,7 @@ def kp_sum(x, vmin, h, prefix, offset, z, y):
         y[t] = _kp_value(z, vmin, h, prefix, offset)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def kp_regressors(x, vmin, h, z, cell_d, cell_j, A):
     """KP operator outputs rho(z_d - m) for every sample and cell (columns
     ordered by `cell_d`, `cell_j`); `z` updated."""
@@ -286,14 +286,14 @@ def kp_regressors(x, vmin, h, z, cell_d, cell_j, A):
             A[t, c] = q
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _kp_trial(z, v, r, vmin, h, prefix, offset, work):
     work[:] = z
     play_step(v, r, 0.0, work)
     return _kp_value(work, vmin, h, prefix, offset)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
     """Monotone solve per sample (bisection on the input in [vmin, vmax]):
     the KP output after a monotone step to v is non-decreasing in v for
@@ -374,7 +374,7 @@ def kp_inverse(u, vmin, vmax, h, prefix, offset, z, vprev, tol, out, info):
 # ----------------------------------------------------------------------------
 # differential models: Bouc-Wen (eq. 3) and backlash-like (eq. 5)
 # ----------------------------------------------------------------------------
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _bw_rate(w, s, A, alpha, beta, n):
     """dw/dv of eq. 3 for an input moving in direction s = +-1."""
     aw = abs(w)
@@ -389,7 +389,7 @@ def _bw_rate(w, s, A, alpha, beta, n):
     return A - beta * p * aw - alpha * s * p * w
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _diff_step(kind, prm, w, v0, v1):
     """State w after a monotone input step v0 -> v1."""
     dv = v1 - v0
@@ -440,7 +440,7 @@ def _diff_step(kind, prm, w, v0, v1):
         rest = rest - m * hstep
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _rk4(w, hs, s, A, alpha, beta, n):
     k1 = _bw_rate(w, s, A, alpha, beta, n)
     k2 = _bw_rate(w + 0.5 * hs * k1, s, A, alpha, beta, n)
@@ -449,7 +449,7 @@ def _rk4(w, hs, s, A, alpha, beta, n):
     return w + hs * (k1 + 2.0 * k2 + 2.0 * k3 + k4) / 6.0
 
 
-@njit(cache=True, nogil=True, inline="always")
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
 def _lin_relax(w, d, A, kappa):
     """w after d along dw/dv = A - kappa w (exact)."""
     if kappa == 0.0:
@@ -458,7 +458,7 @@ def _lin_relax(w, d, A, kappa):
     return ws + (w - ws) * math.exp(-kappa * d)
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _bw_exact_n1(w, dv, s, A, alpha, beta):
     """Eq. 3 with n = 1 on a monotone step, exactly: dw/dv = A - kappa w with
     kappa = beta sign(w) + alpha s, piecewise constant between zero crossings
@@ -482,7 +482,7 @@ def _bw_exact_n1(w, dv, s, A, alpha, beta):
     return wn
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def diff_sum(kind, prm, gain, offset, x, state, y):
     """Output ``gain * v + sign * w + offset`` per sample (sign = prm[5] for
     Bouc-Wen, else 1); state [v_prev, w] updated."""
@@ -498,7 +498,7 @@ def diff_sum(kind, prm, gain, offset, x, state, y):
     state[1] = w
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def diff_inverse(kind, prm, gain, offset, u, state, vlo, vhi, tol, out, info):
     """Monotone solve per sample: the output after a monotone step from
     v_prev is non-decreasing in the new input (the models' valid ranges

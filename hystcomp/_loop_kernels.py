@@ -38,9 +38,9 @@ B_STOP = 2    # stop-type PI forward (stop_sum)
 B_EXACT = 3   # exact inverse (inverse_solve)
 
 
-@njit(cache=True, nogil=True)
-def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev,
-               bin_, bout, info):
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
+def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state,
+               xprev, bin_, bout, info):
     """One sample of a hysteresis or compensator block; `state` is updated
     in place, returns (output, new xprev)."""
     bin_[0] = x
@@ -52,7 +52,7 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, s
         xprev = _k.stop_sum(bin_, r, p, p0, state, xprev, bout)
     else:
         xprev = _k.inverse_solve(fam, bin_, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
-                                 lo, hi, 1e-14, bout, info)
+                                 lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
@@ -60,34 +60,40 @@ def block_step(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, s
 # arguments a step does not need are ignored).  Inlined by numba into the
 # loop: a wrapper compiled on its own would have LLVM optimise the kernel it
 # calls once more (first-call compilation time).
-@njit(cache=True, nogil=True, inline="always")
-def step_none(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_none(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """No block (never called: the loops test ``use_comp``)."""
     return x, xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """PI forward (identity or linear envelope)."""
     bin_[0] = x
     _k.pi_sum(bin_, r, p, p0, state, 1.0 if kl == _k.IDENTITY else pl[0], bout)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_play_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
-    """Symmetric mGPI forward, Tanh or Atanh envelope, one sample per step
-    (the scalar `play_sum_closed`: same envelope values as `MGPI.simulate`'s
-    SIMD kernel, ordered sum; one step and one compiled loop copy for a tanh
-    actuator with or without the analytic compensator, an Atanh envelope)."""
+    """Symmetric mGPI with a Tanh or Atanh envelope: the forward, one sample
+    per step (the scalar `play_sum_closed`: same envelope values as
+    `MGPI.simulate`'s SIMD kernel, ordered sum), and the exact inverse of a
+    tanh mGPI (`play_solve_tanh`, the kernel of `ExactInverse.simulate`).
+    One step for both, so that a tanh actuator's loops without a compensator,
+    with the analytic one (Atanh) and with the exact one share one compiled
+    loop copy (the demo's loops: one loop compilation instead of two)."""
     bin_[0] = x
-    _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
+    if code == B_EXACT:
+        xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
+    else:
+        _k.play_sum_closed(bin_, r, p, p0, state, kl, pl, bout)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Symmetric mGPI forward, any compiled envelope."""
     bin_[0] = x
@@ -95,8 +101,8 @@ def step_play_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Asymmetric mGPI forward, closed-form envelopes."""
     bin_[0] = x
@@ -104,8 +110,8 @@ def step_mplay_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Asymmetric mGPI forward, any compiled envelopes."""
     bin_[0] = x
@@ -113,57 +119,48 @@ def step_mplay_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, l
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout, info):
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_stop(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout, info):
     """Stop-type PI forward."""
     bin_[0] = x
     xprev = _k.stop_sum(bin_, r, p, p0, state, xprev, bout)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_exact_pi(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                   info):
     """Exact inverse of a PI model."""
     bin_[0] = x
-    xprev = _k.play_solve_pi(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_pi(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_tanh(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
-                    info):
-    """Exact inverse of a symmetric tanh mGPI (the kernel of `ExactInverse.simulate`)."""
-    bin_[0] = x
-    xprev = _k.play_solve_tanh(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
-    return bout[0], xprev
-
-
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_exact_closed(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                       info):
     """Exact inverse of a symmetric mGPI with a Linear or Atanh envelope."""
     bin_[0] = x
-    xprev = _k.play_solve_closed(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_closed(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_exact_general(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                        info):
     """Exact inverse of a symmetric mGPI with any compiled envelope."""
     bin_[0] = x
-    xprev = _k.play_solve_general(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, 1e-14, bout, info)
+    xprev = _k.play_solve_general(bin_, r, p, p0, state, xprev, kl, pl, lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
-@njit(cache=True, nogil=True, inline="always")
-def step_exact_other(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, state, xprev, bin_, bout,
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, inline="always")
+def step_exact_other(code, fam, x, r, p, p0, kl, pl, kr, pr, kh, ph, hscale, lo, hi, rtol, state, xprev, bin_, bout,
                      info):
     """Exact inverse of the other families (asymmetric mGPI, GPI, stop)."""
     bin_[0] = x
     xprev = _k.inverse_solve_other(fam, bin_, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale,
-                                   lo, hi, 1e-14, bout, info)
+                                   lo, hi, rtol, bout, info)
     return bout[0], xprev
 
 
@@ -185,11 +182,11 @@ def step_kernel(code, fam, kl, kr):
     if kl == _k.IDENTITY:
         return step_exact_pi
     if kl == _k.TANH:
-        return step_exact_tanh
+        return step_play_closed   # with the tanh forward (one loop copy for both)
     return step_exact_closed if kl in (_k.LINEAR, _k.ATANH) else step_exact_general
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _matvec_add(A, x, B, u, out):
     n = A.shape[0]
     for i in range(n):
@@ -199,7 +196,7 @@ def _matvec_add(A, x, B, u, out):
         out[i] = s + B[i, 0] * u
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _copy(src, dst):
     # element by element: a slice assignment compiles numba's shape-mismatch
     # error message (string formatting), seconds of first-call compilation
@@ -207,7 +204,7 @@ def _copy(src, dst):
         dst[i] = src[i]
 
 
-@njit(cache=True, nogil=True)
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _dot(C, x):
     s = 0.0
     for j in range(C.shape[1]):
@@ -225,9 +222,9 @@ def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
              Ap, Bp, Cp, Dp, xp,
              Ac, Bc, Cc, Dc, xc, limited, ulo, uhi, pid_dt,
              h_code, h_fam, h_r, h_p, h_p0, h_kl, h_pl, h_kr, h_pr, h_kh, h_ph, h_hs, h_lo, h_hi,
-             h_state, h_xprev,
+             h_rtol, h_state, h_xprev,
              c_code, c_fam, c_r, c_p, c_p0, c_kl, c_pl, c_kr, c_pr, c_kh, c_ph, c_hs, c_lo, c_hi,
-             c_state, c_xprev,
+             c_rtol, c_state, c_xprev,
              y_out, w_out, v_out, info):
     """Run a loop over the reference samples; states are updated in place.
     Returns the final (h_xprev, c_xprev); info[0] counts clipped
@@ -260,13 +257,13 @@ def _run_loop_template(ref, ff, use_ff, use_fb, use_comp, kcomp,
             u = u + uc if use_ff else uc
         if use_comp:
             v, c_xprev = _c_step(c_code, c_fam, kcomp * u, c_r, c_p, c_p0, c_kl, c_pl, c_kr, c_pr,
-                                 c_kh, c_ph, c_hs, c_lo, c_hi, c_state, c_xprev, bin_, bout, binfo)
+                                 c_kh, c_ph, c_hs, c_lo, c_hi, c_rtol, c_state, c_xprev, bin_, bout, binfo)
             if c_code == B_EXACT:
                 n_clip += binfo[0]
         else:
             v = u
         w, h_xprev = _h_step(h_code, h_fam, v, h_r, h_p, h_p0, h_kl, h_pl, h_kr, h_pr,
-                             h_kh, h_ph, h_hs, h_lo, h_hi, h_state, h_xprev, bin_, bout, binfo)
+                             h_kh, h_ph, h_hs, h_lo, h_hi, h_rtol, h_state, h_xprev, bin_, bout, binfo)
         y_out[k] = y0 + Dp[0, 0] * w
         w_out[k] = w
         v_out[k] = v

@@ -97,8 +97,17 @@ def reproduce(out, echo=print, dt=None, quiet=False):
     return rows
 
 
-def build_parser():
+def build_parser(command=None):
     """The argument parser of the ``hystcomp`` command.
+
+    Parameters
+    ----------
+    command : str, optional
+        The subcommand the parser will see, when known (`main` passes it):
+        the options of the other subcommands are then not defined, so that
+        ``hystcomp demo`` does not import the diagnosis and identification
+        code (scikit-learn, about 2 s).  Default None: every subcommand with
+        all its options.
 
     Examples
     --------
@@ -123,13 +132,15 @@ def build_parser():
             "crossover of each, and the tracking of open loop, inverse feedforward, PID, PID + "
             "compensator and feedforward + PID; prints the tables, writes PNG figures and a CSV")
     demo.add_arguments(sub.add_parser("demo", help=text, description=text))
-    from . import diagnose
-
     text = ("find what a fitted PI model misses in a measured record (rate dependence, creep, drift, "
             "gain drift, asymmetry, saturation, output saturation, delay, initial state): name an effect "
             "only when its signature is in the residual and its model part pays on held-out data; "
             "verdict 'explained' or 'unexplained' against the record's own noise floor")
-    diagnose.add_arguments(sub.add_parser("diagnose", help=text, description=text))
+    p = sub.add_parser("diagnose", help=text, description=text)
+    if command in (None, "diagnose"):
+        from . import diagnose
+
+        diagnose.add_arguments(p)
     text = ("reproduce the thesis: figures of sections 2.1, 3.4.3, 3.5, 4.1, 5.2-5.4, "
             "a printed table of the section 5 compensation errors and its CSV")
     p = sub.add_parser("thesis", help=text, description=text)
@@ -154,7 +165,10 @@ def main(argv=None):
     argv = list(sys.argv[1:] if argv is None else argv)
     debug = "--debug" in argv
     argv = [a for a in argv if a != "--debug"]
-    parser = build_parser()
+    # the subcommand is the first argument that is not an option (the main
+    # parser's options take no value); unknown names get the full parser
+    command = next((a for a in argv if not a.startswith("-")), None)
+    parser = build_parser(command if command in ("demo", "thesis") else None)
     args = parser.parse_args(argv)
     _check_options(parser, args)
     try:

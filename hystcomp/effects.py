@@ -53,7 +53,7 @@ __all__ = ["LinearStage", "RateDependentPI", "CreepOperator", "DriftTerm", "Seri
 # ----------------------------------------------------------------------------
 # compiled kernels (one loop over samples each)
 # ----------------------------------------------------------------------------
-@njit(cache=True)
+@njit(cache=True, no_cfunc_wrapper=True)
 def _rate_play_states(v, r, beta, dt, z, prev, out):
     """Plays with thresholds r_i + beta |v_k - v_{k-1}| / dt.
 

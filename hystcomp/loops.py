@@ -559,7 +559,7 @@ def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=No
                           np.ascontiguousarray(Ac, dtype=np.float64), np.ascontiguousarray(Bc, dtype=np.float64),
                           np.ascontiguousarray(Cc, dtype=np.float64), np.ascontiguousarray(Dc, dtype=np.float64),
                           xc, limited, float(ulo), float(uhi), float(pid_dt),
-                          *h[:16], *c[:16], y, w, v, info_arr)
+                          *h[:17], *c[:17], y, w, v, info_arr)
     return ct.TimeResponseData(t, np.vstack([y, w, v]), None, r, output_labels=["y", "w", "v"],
                                input_labels=["r"], sysname=loop.name, issiso=False,
                                title=f"Compiled loop {loop.name}")

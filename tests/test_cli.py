@@ -76,3 +76,20 @@ def test_bad_option_subprocess():
                           capture_output=True, text=True, timeout=300)
     assert proc.returncode == 2
     assert "unrecognized arguments: --bogus" in proc.stderr
+
+
+def test_demo_does_not_import_the_diagnosis_code():
+    # `hystcomp demo` defines only the options of the command it runs: the
+    # diagnosis (and through it scikit-learn, ~2 s of a cold demo) is not
+    # imported; `hystcomp --help` and `hystcomp diagnose` still see everything
+    code = ("import sys\nfrom hystcomp import cli\n"
+            "for argv in (['demo', '--help'], ['--debug', 'thesis', '--help']):\n"
+            "    try:\n        cli.main(argv)\n    except SystemExit:\n        pass\n"
+            "print('MODULES', 'hystcomp.diagnose' in sys.modules, 'sklearn' in sys.modules)\n")
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=300)
+    assert proc.returncode == 0, proc.stderr
+    assert proc.stdout.strip().splitlines()[-1] == "MODULES False False"
+    full = cli.build_parser()
+    args = full.parse_args(["diagnose", "data.csv", "--quiet"])
+    assert args.command == "diagnose" and args.quiet
+    assert cli.build_parser("demo").parse_args(["demo", "--no-figures"]).no_figures

@@ -41,6 +41,18 @@ def test_progress_bar_shows_on_a_terminal_only():
     quiet = _Terminal()
     list(progress_bar(range(5), file=quiet, enabled=False))
     assert quiet.getvalue() == ""
+    # a bar that does not show answers the bar's methods and draws nothing
+    for silent in (progress_bar(total=3, file=pipe), progress_bar(total=3, file=quiet, enabled=False)):
+        assert silent.disable
+        with silent as bar:
+            bar.set_postfix_str("a", refresh=False)
+            bar.set_description_str("b", refresh=False)
+            bar.update()
+        silent.close()
+        out = io.StringIO()
+        silent.write("line", file=out)
+        assert out.getvalue() == "line\n"
+    assert pipe.getvalue() == "" and quiet.getvalue() == ""
 
 
 def _demo_args(out, *extra):
