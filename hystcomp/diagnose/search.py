@@ -118,7 +118,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     stopped = "no candidate effect to try"
     ev = first_ev
 
-    def add_step(part, st, pt, prev, trials, step_trial, paired=None):
+    def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None):
         """Record a step: `part` added, fit `pt` of structure `st`, judged against
         the model `prev` before it; the signature is the evidence of the residual
         the step started from (`ev`, `cur`)."""
@@ -131,6 +131,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         if paired is not None:
             step_ev["paired"] = paired
         step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
+        # the parts that passed every acceptance rule at this step, with their
+        # held-out gain in noise variances (near ties: see _alternatives)
+        step_ev["acceptable"] = dict(acceptable or {})
         steps.append({"effect": part.effect, "rms_before": before, "rms_after": after,
                       "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * after / rec.y_span,
                       "evidence": step_ev})
@@ -251,7 +254,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 # kept when it fits the training part better without losing on the held-out part
                 if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
                     pt = joint
-            add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()})
+            add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()},
+                     acceptable={j[1]: round(j[0], 4) for j in ok})
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
@@ -310,10 +314,13 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             f"(naming needs {100 * NAMED_SHARE:.0f} %): most of the misfit is of a kind hystcomp has no part for "
             "(e.g. a hysteresis core that is not PI); the extensions are tentative, not named")
         stopped += f"; extensions tentative: {', '.join(tentative)}"
+    ambiguous = _alternatives(steps, chosen)
+    for eff, alts in ambiguous.items():
+        say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
     verdict = "explained" if not remaining else "unexplained"
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
-                tentative=tentative, misfit_share_explained=share,
+                tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
@@ -321,6 +328,42 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
+
+
+#: an acceptable part of another effect whose held-out gain at the step came
+#: within this share of the named part's gain is a near tie: the record does
+#: not tell the two effects apart (reported under ``ambiguous``)
+AMBIGUOUS = 0.1
+
+
+def _alternatives(steps, chosen):
+    """The near ties of every named step: effects not named whose part passed
+    every acceptance rule at that step with a held-out gain of at least
+    ``1 - AMBIGUOUS`` times the named part's (or more: a part with fewer
+    parameters was preferred).  Sets ``step["alternatives"]``; returns
+    ``{named effect: [alternative effects]}`` for the steps that have any."""
+    out = {}
+    for st in steps:
+        st["alternatives"] = []
+        if st.get("dropped") or st.get("tentative"):
+            continue
+        acc = st["evidence"].get("acceptable", {})
+        kind = (st["evidence"].get("revised") or {}).get("by") or st["evidence"]["extension"]["kind"]
+        gain = acc.get(kind)
+        if gain is None or gain <= 0:
+            continue        # a paired step, or a part put in by the revision
+        best = {}
+        for k, g in acc.items():
+            eff = PARTS[k].effect
+            if eff == st["effect"] or eff in chosen or g < (1.0 - AMBIGUOUS) * gain:
+                continue
+            if eff not in best or g > best[eff]["held_out_gain_noise_variances"]:
+                best[eff] = {"effect": eff, "kind": k, "held_out_gain_noise_variances": g,
+                             "named_gain_noise_variances": gain}
+        st["alternatives"] = sorted(best.values(), key=lambda a: -a["held_out_gain_noise_variances"])
+        if best:
+            out[st["effect"]] = [a["effect"] for a in st["alternatives"]]
+    return out
 
 
 def _n_parameters(part, structure, ctx):
