@@ -83,10 +83,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
 def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick):
     t0 = time.perf_counter()
     rec = Record(t, v, y, validation)
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
-    if thresholds is not None:
-        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
-        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
+    ctx = base_context(rec, n_thresholds, thresholds)
     held = ~rec.train
     vp = VariableProjection(ctx, rec.y, rec.train)
 
@@ -364,6 +361,60 @@ def _alternatives(steps, chosen):
         if best:
             out[st["effect"]] = [a["effect"] for a in st["alternatives"]]
     return out
+
+
+def base_context(rec, n_thresholds=20, thresholds=None):
+    """The parts' :class:`~hystcomp.identify.parts.Context` of a record:
+    its scaling and clock, and the base model's play thresholds (`thresholds`
+    in input units when given, else :func:`play_thresholds`)."""
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
+    if thresholds is not None:
+        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
+        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
+    else:
+        ctx.thresholds = play_thresholds(rec.span / rec.scale, n_thresholds)
+    return ctx
+
+
+#: plays kept above half the input span on a record whose scale exceeds it
+LOADING_PLAYS = 4
+
+
+def play_thresholds(span, n):
+    """Thresholds of the base model's `n` plays (scaled input, origin 0).
+
+    After the first loading, an input that moves within a span ``span`` moves
+    only the plays with thresholds below ``span / 2``.  A bipolar record
+    (``span`` = 2) gets ``i / n`` as before.  A record whose scale is larger
+    than half its span (a unipolar stroke 0 ... V: ``span`` = 1) gets
+    ``n - LOADING_PLAYS`` thresholds evenly below ``span / 2``, where its
+    loops need the resolution, and ``LOADING_PLAYS`` evenly from there to 1
+    for the first loading curve; evenly up to 1 (``i / n``) it would spend
+    half its plays on thresholds that only the first loading moves.
+
+    Parameters
+    ----------
+    span : float
+        The input's span over its scale (``(max v - min v) / scale``).
+    n : int
+        Number of plays (the first has threshold 0).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+
+    Examples
+    --------
+    >>> play_thresholds(2.0, 4).tolist()
+    [0.0, 0.25, 0.5, 0.75]
+    >>> play_thresholds(1.0, 8).round(3).tolist()
+    [0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875]
+    """
+    half = 0.5 * span
+    if half >= 0.75 or n <= 2 * LOADING_PLAYS:
+        return np.arange(n) / n
+    m = n - LOADING_PLAYS
+    return np.concatenate([np.arange(m) / m * half, half + np.arange(LOADING_PLAYS) / LOADING_PLAYS * (1.0 - half)])
 
 
 def _n_parameters(part, structure, ctx):
