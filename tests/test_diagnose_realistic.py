@@ -1,7 +1,7 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
-Every case of the tuning, held-out and HOLDOUT2 sets of ``tests/realistic`` (HOLDOUT3 is kept
-unseen; one seed each here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs
+Every case of the tuning, held-out, HOLDOUT2 and HOLDOUT3 sets of ``tests/realistic`` (HOLDOUT4
+is kept unseen; one seed each here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs
 three) is diagnosed once, on two processes, and judged against the issue's criteria:
 
 - the right verdict (named effect families equal the expected ones, verdict as expected) in
