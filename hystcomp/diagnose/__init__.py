@@ -82,7 +82,10 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         At most this many effects are added.
     base : "pi" or PI
         The base model: ``"pi"`` (thresholds ``i/N`` of the largest input
-        excursion from the origin, N = `n_thresholds`) or a
+        excursion from the origin, N = `n_thresholds`; on a record whose
+        span is less than 1.5 times that excursion, a unipolar stroke, N - 4
+        of them below half the span and 4 above, see
+        :func:`~hystcomp.diagnose.search.play_thresholds`) or a
         :class:`~hystcomp.models.PI` whose thresholds are used.
     n_thresholds : int
         Number of plays of the default base model.
@@ -187,13 +190,13 @@ def evidence(t, v, y, model=None, validation=0.3):
     >>> ev["saturation"]["present"], ev["creep"]["present"]
     (True, False)
     """
-    from ..identify.parts import Context
     from ..identify.search import Structure, VariableProjection
     from .record import Record, noise_floor
+    from .search import base_context
     from .signatures import evidence as _evidence
 
     rec = Record(t, v, y, validation)
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration)
+    ctx = base_context(rec)
     base = VariableProjection(ctx, rec.y, rec.train).evaluate(Structure(), {}).prediction
     sigma, _ = noise_floor(rec, rec.y - base)
     pred = base if model is None else rec.output_sign * np.asarray(model.simulate(rec.v), dtype=np.float64)

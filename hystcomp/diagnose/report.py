@@ -7,7 +7,7 @@ import textwrap
 
 import numpy as np
 
-SCHEMA_VERSION = 3
+SCHEMA_VERSION = 4
 
 
 def _jsonable(x):
@@ -45,6 +45,14 @@ class Diagnosis:
         than 90 % of the base model's misfit above the noise (the misfit is
         mostly of a kind no part describes; ``remaining`` says so under
         ``out_of_vocabulary``).  Empty otherwise.
+    ambiguous : dict
+        Named effects the record does not tell apart from others: named
+        effect -> the effects whose part came within 10 % of the named part's
+        held-out gain at its step and passed every acceptance rule (e.g. a
+        dead time and a first-order lag under a drive too slow to separate
+        them).  The named one is the better fit or the one with fewer
+        parameters; read it as "this or one of these".  Each step lists its
+        near ties under ``alternatives``.
     misfit_share_explained : float
         Share of the base model's held-out mean square above the noise that
         the final model removes (1: all of it).
@@ -53,7 +61,8 @@ class Diagnosis:
         ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
         output span), ``evidence`` (the signature test, the extension and its
         parameters, gain and BIC change, every candidate's held-out RMS) and
-        ``dropped`` (True when a later effect made it redundant).
+        ``dropped`` (True when a later effect made it redundant) and
+        ``alternatives`` (its near ties, see :attr:`ambiguous`).
     revisions : list of dict
         Changes of the final pass over the chosen effects: a near-tie part
         replaced by another effect's (``replaced``, ``by``), or a redundant
@@ -87,14 +96,16 @@ class Diagnosis:
 
     def _final_name(self):
         """The final model's parts, e.g. "PI + creep + drift" (tentative ones said so)."""
-        names = " + ".join(["PI"] + list(self.tentative or self.effects))
+        amb = self.ambiguous
+        names = " + ".join(["PI"] + [e + (f" (or {' or '.join(amb[e])})" if e in amb else "")
+                                     for e in (self.tentative or self.effects)])
         return names + (" (tentative, not named)" if self.tentative else "")
 
     def _pct(self, x):
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 3).
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 4).
 
         Returns
         -------
@@ -103,11 +114,13 @@ class Diagnosis:
         steps = [{"effect": s["effect"], "rms_before": s["rms_before"], "rms_after": s["rms_after"],
                   "rms_before_pct": self._pct(s["rms_before"]), "rms_after_pct": self._pct(s["rms_after"]),
                   "evidence": s["evidence"], "dropped": bool(s.get("dropped", False)),
-                  "tentative": bool(s.get("tentative", False))} for s in self.steps]
+                  "tentative": bool(s.get("tentative", False)),
+                  "alternatives": list(s.get("alternatives", []))} for s in self.steps]
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
             "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
             "effects": list(self.effects), "tentative_effects": list(self.tentative),
+            "ambiguous": dict(self.ambiguous),
             "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
@@ -146,6 +159,10 @@ class Diagnosis:
             lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+            for a in st.get("alternatives", []):
+                lines.append(f"  near tie: {a['effect']} ({a['kind']}) lowers the held-out mean square by "
+                             f"{a['held_out_gain_noise_variances']:.3g} noise variances against "
+                             f"{a['named_gain_noise_variances']:.3g}: the record does not tell them apart")
         for rv in getattr(self, "revisions", []):
             what = f"replaced by {rv['by']} ({rv['effect_after']})" if rv["by"] else "dropped"
             lines.append(f"revision: step {rv['step']}'s {rv['replaced']} {what}: held-out RMS {rv['rms_before']:.4g} "
@@ -153,7 +170,9 @@ class Diagnosis:
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
         tent = self.tentative
-        lines.append(f"verdict: {self.verdict}; effects: {', '.join(self.effects) or 'none'}"
+        named = [e + (f" (or {' or '.join(self.ambiguous[e])})" if e in self.ambiguous else "")
+                 for e in self.effects]
+        lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"
                      + (f" (tentative, not named: {', '.join(tent)})" if tent else "") + "; held-out RMS "
                      f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")
         return "\n".join(lines)
@@ -257,6 +276,8 @@ class Diagnosis:
                 lab = f"+ {rv['effect_before']} (replaced by {rv['effect_after']} in the revision)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
+                if st.get("alternatives"):
+                    lab += f" (or {' or '.join(a['effect'] for a in st['alternatives'])}: near tie)"
             labels.append(lab + (" [tentative]" if st.get("tentative") else ""))
         if len(preds) > len(labels):
             labels.append(f"final: {self._final_name()} (after revision)")

@@ -83,10 +83,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
 def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick):
     t0 = time.perf_counter()
     rec = Record(t, v, y, validation)
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
-    if thresholds is not None:
-        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
-        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
+    ctx = base_context(rec, n_thresholds, thresholds)
     held = ~rec.train
     vp = VariableProjection(ctx, rec.y, rec.train)
 
@@ -118,7 +115,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     stopped = "no candidate effect to try"
     ev = first_ev
 
-    def add_step(part, st, pt, prev, trials, step_trial, paired=None):
+    def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None):
         """Record a step: `part` added, fit `pt` of structure `st`, judged against
         the model `prev` before it; the signature is the evidence of the residual
         the step started from (`ev`, `cur`)."""
@@ -131,6 +128,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         if paired is not None:
             step_ev["paired"] = paired
         step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
+        # the parts that passed every acceptance rule at this step, with their
+        # held-out gain in noise variances (near ties: see _alternatives)
+        step_ev["acceptable"] = dict(acceptable or {})
         steps.append({"effect": part.effect, "rms_before": before, "rms_after": after,
                       "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * after / rec.y_span,
                       "evidence": step_ev})
@@ -251,7 +251,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 # kept when it fits the training part better without losing on the held-out part
                 if joint.rss < pt.rss and rms_val(joint) <= rms_val(pt):
                     pt = joint
-            add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()})
+            add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()},
+                     acceptable={j[1]: round(j[0], 4) for j in ok})
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
@@ -310,10 +311,13 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             f"(naming needs {100 * NAMED_SHARE:.0f} %): most of the misfit is of a kind hystcomp has no part for "
             "(e.g. a hysteresis core that is not PI); the extensions are tentative, not named")
         stopped += f"; extensions tentative: {', '.join(tentative)}"
+    ambiguous = _alternatives(steps, chosen)
+    for eff, alts in ambiguous.items():
+        say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
     verdict = "explained" if not remaining else "unexplained"
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
-                tentative=tentative, misfit_share_explained=share,
+                tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
@@ -321,6 +325,96 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
+
+
+#: an acceptable part of another effect whose held-out gain at the step came
+#: within this share of the named part's gain is a near tie: the record does
+#: not tell the two effects apart (reported under ``ambiguous``)
+AMBIGUOUS = 0.1
+
+
+def _alternatives(steps, chosen):
+    """The near ties of every named step: effects not named whose part passed
+    every acceptance rule at that step with a held-out gain of at least
+    ``1 - AMBIGUOUS`` times the named part's (or more: a part with fewer
+    parameters was preferred).  Sets ``step["alternatives"]``; returns
+    ``{named effect: [alternative effects]}`` for the steps that have any."""
+    out = {}
+    for st in steps:
+        st["alternatives"] = []
+        if st.get("dropped") or st.get("tentative"):
+            continue
+        acc = st["evidence"].get("acceptable", {})
+        kind = (st["evidence"].get("revised") or {}).get("by") or st["evidence"]["extension"]["kind"]
+        gain = acc.get(kind)
+        if gain is None or gain <= 0:
+            continue        # a paired step, or a part put in by the revision
+        best = {}
+        for k, g in acc.items():
+            eff = PARTS[k].effect
+            if eff == st["effect"] or eff in chosen or g < (1.0 - AMBIGUOUS) * gain:
+                continue
+            if eff not in best or g > best[eff]["held_out_gain_noise_variances"]:
+                best[eff] = {"effect": eff, "kind": k, "held_out_gain_noise_variances": g,
+                             "named_gain_noise_variances": gain}
+        st["alternatives"] = sorted(best.values(), key=lambda a: -a["held_out_gain_noise_variances"])
+        if best:
+            out[st["effect"]] = [a["effect"] for a in st["alternatives"]]
+    return out
+
+
+def base_context(rec, n_thresholds=20, thresholds=None):
+    """The parts' :class:`~hystcomp.identify.parts.Context` of a record:
+    its scaling and clock, and the base model's play thresholds (`thresholds`
+    in input units when given, else :func:`play_thresholds`)."""
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
+    if thresholds is not None:
+        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
+        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
+    else:
+        ctx.thresholds = play_thresholds(rec.span / rec.scale, n_thresholds)
+    return ctx
+
+
+#: plays kept above half the input span on a record whose scale exceeds it
+LOADING_PLAYS = 4
+
+
+def play_thresholds(span, n):
+    """Thresholds of the base model's `n` plays (scaled input, origin 0).
+
+    After the first loading, an input that moves within a span ``span`` moves
+    only the plays with thresholds below ``span / 2``.  A bipolar record
+    (``span`` = 2) gets ``i / n`` as before.  A record whose scale is larger
+    than half its span (a unipolar stroke 0 ... V: ``span`` = 1) gets
+    ``n - LOADING_PLAYS`` thresholds evenly below ``span / 2``, where its
+    loops need the resolution, and ``LOADING_PLAYS`` evenly from there to 1
+    for the first loading curve; evenly up to 1 (``i / n``) it would spend
+    half its plays on thresholds that only the first loading moves.
+
+    Parameters
+    ----------
+    span : float
+        The input's span over its scale (``(max v - min v) / scale``).
+    n : int
+        Number of plays (the first has threshold 0).
+
+    Returns
+    -------
+    ndarray, shape (n,)
+
+    Examples
+    --------
+    >>> play_thresholds(2.0, 4).tolist()
+    [0.0, 0.25, 0.5, 0.75]
+    >>> play_thresholds(1.0, 8).round(3).tolist()
+    [0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875]
+    """
+    half = 0.5 * span
+    if half >= 0.75 or n <= 2 * LOADING_PLAYS:
+        return np.arange(n) / n
+    m = n - LOADING_PLAYS
+    return np.concatenate([np.arange(m) / m * half, half + np.arange(LOADING_PLAYS) / LOADING_PLAYS * (1.0 - half)])
 
 
 def _n_parameters(part, structure, ctx):

@@ -77,7 +77,9 @@ class Context:
         -------
         Context
         """
-        return Context(v, self.dt, self.origin, self.scale, self.duration, self.n_thresholds, self.noise)
+        ctx = Context(v, self.dt, self.origin, self.scale, self.duration, self.n_thresholds, self.noise)
+        ctx.thresholds = self.thresholds.copy()      # set thresholds carry over (diagnose sets its own)
+        return ctx
 
 
 class Part:

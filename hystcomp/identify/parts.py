@@ -45,9 +45,9 @@ from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa:
 from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, Saturation)
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic,  # noqa: F401
-                             OutputLag, OutputQuadratic, OutputResonance, SensorDrift)
+                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift)
 from .parts_output import OutputClip, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
-           "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep",
+           "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
            "Drift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh", "register", "PARTS"]

@@ -11,8 +11,8 @@ from ..effects import LinearStage, lag_bank
 from ._part_kernels import fractional_delay
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "Creep", "OutputQuadratic",
-           "OutputCubic", "Drift", "SensorDrift"]
+__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
+           "OutputQuadratic", "OutputCubic", "Drift", "SensorDrift"]
 
 
 # ----------------------------------------------------------------------------
@@ -264,6 +264,49 @@ class Creep(Part):
 
     def describe(self, values):
         return {"part": self.description}
+
+
+@register
+class RateTerm(Part):
+    """A rate term beside the hysteresis: ``c L_tau[dv/dt]``, the input's
+    rate (backward difference) through a first-order low-pass of time
+    constant ``tau``, coefficient ``c >= 0`` (it widens the loop as the rate
+    grows).  The classical eddy-current field of a laminated core
+    (Bertotti 1998, *Hysteresis in Magnetism*, ch. 12: ``H_eddy`` is
+    proportional to ``dB/dt``) and viscous damping of a stage are of this
+    kind; unlike a lag or resonance after the hysteresis it makes the output
+    lead, not lag.  Parameter: ``tau`` [s].
+
+    Examples
+    --------
+    >>> ctx = Context(np.array([0.0, 1.0, 2.0, 2.0]), 1.0, 0.0, 1.0, 4.0)
+    >>> RateTerm().columns({"time_constant": 1e-9}, ctx)[0].ravel().round(6).tolist()
+    [0.0, 1.0, 1.0, 0.0]
+    """
+
+    effect = "rate_dependence"
+    kind = "rate_term"
+    slot = "additive"
+    order = 15
+    needs_time = True
+    description = "rate term c L[dv/dt] beside the hysteresis (eddy currents, viscous damping)"
+
+    def parameters(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [Parameter("time_constant", math.sqrt(lo * hi), lo, hi, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [{"time_constant": t} for t in np.geomspace(lo, hi, 4)]
+
+    def columns(self, values, ctx):
+        rate = np.diff(ctx.x, prepend=ctx.x[0]) / ctx.dt
+        scale = float(np.max(np.abs(rate))) or 1.0
+        col = lag_bank(rate / scale, np.array([values["time_constant"]]), ctx.dt, state=np.zeros(1))[0]
+        return col, np.zeros(1), np.full(1, np.inf), ["rate_term"]
+
+    def describe(self, values):
+        return {"part": self.description, "time_constant": float(f"{values['time_constant']:.4g}")}
 
 
 class _OutputBend(Part):

@@ -37,6 +37,8 @@ NOT_CAUSAL = {
     "delay": "a dead time cannot be inverted causally; shift the reference earlier by the delay (preview)",
     "output_resonance": ("the resonance's bilinear (Tustin) discretisation puts both zeros at z = -1, so its "
                          "inverse is unstable; compensate the mode with a notch in the loop instead"),
+    "rate_term": ("the inverse does not solve for a rate term beside the hysteresis yet; invert the model "
+                  "without it (drop the part) and let the loop's feedback take the rate term"),
 }
 
 

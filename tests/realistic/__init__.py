@@ -9,8 +9,10 @@ Two sets of cases: :data:`TUNING` (``cases.py``), on which the diagnosis may be 
 and signals not in the tuning set. Each case is ``case(seed) -> Record``.
 :data:`HOLDOUT2` (``cases_holdout2.py``) was written after the first tuning round and run once,
 for that round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
-:data:`HOLDOUT3` (``cases_holdout3.py``) is a fresh set written after that measurement, never
-run through the diagnosis and left out of :data:`ALL`: for the next round's final measurement.
+:data:`HOLDOUT3` (``cases_holdout3.py``) was written after that measurement and run once for
+the third round's (docs/diagnose.md); it is part of :data:`ALL` since.
+:data:`HOLDOUT4` (``cases_holdout4.py``) is a fresh set written after that, never run through
+the diagnosis and left out of :data:`ALL`: for the next round's final measurement.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -18,5 +20,6 @@ from .cases import TUNING  # noqa: F401
 from .cases_holdout import HOLDOUT  # noqa: F401
 from .cases_holdout2 import HOLDOUT2  # noqa: F401
 from .cases_holdout3 import HOLDOUT3  # noqa: F401
+from .cases_holdout4 import HOLDOUT4  # noqa: F401
 
-ALL = {**TUNING, **HOLDOUT, **HOLDOUT2}
+ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3}

@@ -1,6 +1,5 @@
-"""The HOLDOUT3 set: written after HOLDOUT2 was measured (2026-11-23), never run through the
-diagnosis. Use it once, for the final measurement of the next tuning round, and write a new
-one after.
+"""The HOLDOUT3 set: written after HOLDOUT2 was measured (2026-11-23) and run once, for the
+third round's final measurement (docs/diagnose.md); part of ``ALL`` since.
 
 Mechanisms and signals that the other sets do not have: a clockwise loop (an output that
 falls behind the input the other way round, which no PI with non-negative weights draws), a
