@@ -61,8 +61,22 @@ def _lag_bounds(ctx):
     return lo, hi
 
 
+class _Lag(Part):
+    """A first-order lag's time constant [s] (the one nonlinear parameter of
+    :class:`InputLag` and :class:`OutputLag`), from 0.3 dt to
+    ``max(50 dt, min(0.5 s, T/20))``."""
+
+    def parameters(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [Parameter("time_constant", 3 * ctx.dt, lo, hi, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = _lag_bounds(ctx)
+        return [{"time_constant": t} for t in np.geomspace(lo * 2, hi, 5)]
+
+
 @register
-class InputLag(Part):
+class InputLag(_Lag):
     """A first-order lag before the hysteresis (time constant [s]).
 
     Examples
@@ -78,14 +92,6 @@ class InputLag(Part):
     order = 20
     needs_time = True
     description = "first-order lag before the hysteresis"
-
-    def parameters(self, ctx, kinds):
-        lo, hi = _lag_bounds(ctx)
-        return [Parameter("time_constant", 3 * ctx.dt, lo, hi, True)]
-
-    def initial_values(self, ctx, kinds):
-        lo, hi = _lag_bounds(ctx)
-        return [{"time_constant": t} for t in np.geomspace(lo * 2, hi, 5)]
 
     def transform(self, x, values, ctx):
         # at rest at the first sample (the record starts in a steady state)
@@ -105,7 +111,7 @@ def _steady_filter(stage, cols):
 
 
 @register
-class OutputLag(Part):
+class OutputLag(_Lag):
     """A first-order lag after the hysteresis (time constant [s]).
 
     Examples
@@ -121,14 +127,6 @@ class OutputLag(Part):
     order = 10
     needs_time = True
     description = "first-order lag after the hysteresis"
-
-    def parameters(self, ctx, kinds):
-        lo, hi = _lag_bounds(ctx)
-        return [Parameter("time_constant", 3 * ctx.dt, lo, hi, True)]
-
-    def initial_values(self, ctx, kinds):
-        lo, hi = _lag_bounds(ctx)
-        return [{"time_constant": t} for t in np.geomspace(lo * 2, hi, 5)]
 
     def filter(self, columns, values, ctx):
         return _steady_filter(LinearStage.lag(values["time_constant"], ctx.dt), columns)
