@@ -92,3 +92,11 @@ def test_thresholds_given_are_the_models_thresholds():
     held = slice(rep._rec.k_val, None)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+
+
+def test_loop_figure_thinning_note_reads_as_english():
+    # "every 3rd half-cycle", not "every 3th" (the loops figure of long records)
+    from hystcomp.diagnose.report import _ordinal
+
+    assert [_ordinal(n) for n in (1, 2, 3, 4, 11, 12, 13, 21, 22, 103, 111)] == [
+        "1st", "2nd", "3rd", "4th", "11th", "12th", "13th", "21st", "22nd", "103rd", "111th"]

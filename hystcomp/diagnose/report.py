@@ -26,6 +26,12 @@ def _jsonable(x):
     return x
 
 
+def _ordinal(n):
+    """2 -> "2nd", 3 -> "3rd", 11 -> "11th", 21 -> "21st"."""
+    suffix = "th" if 10 <= n % 100 <= 20 else {1: "st", 2: "nd", 3: "rd"}.get(n % 10, "th")
+    return f"{n}{suffix}"
+
+
 class Diagnosis:
     """The outcome of :func:`hystcomp.diagnose.diagnose`.
 
@@ -253,7 +259,7 @@ class Diagnosis:
         if turns.size > 16:
             step = int(math.ceil(turns.size / 16))
             sel = np.concatenate([np.arange(turns[j], turns[j + 1]) for j in range(0, turns.size - 1, step)])
-            note = f" (every {step}th half-cycle)"
+            note = f" (every {_ordinal(step)} half-cycle)"
         else:
             sel, note = val, ""
         final = self._final_pred
