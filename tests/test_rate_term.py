@@ -18,14 +18,7 @@ def _eddy_record(seed):
     dt = 5e-4
     v = np.concatenate([ex.decaying_sines(dt, 6_000, (f, 1.6 * f), 40.0) for f in (0.7, 6.0, 18.0)])
     h = me.play_core(v, 90.0)
-    rate = np.gradient(v, dt)
-    a = np.exp(-dt / 1.5e-3)
-    lp = np.empty_like(rate)
-    acc = 0.0
-    for k, x in enumerate(rate):
-        acc = a * acc + (1 - a) * x
-        lp[k] = acc
-    y = h + 1.5e-3 * np.ptp(h) / np.ptp(v) * lp
+    y = h + 1.5e-3 * np.ptp(h) / np.ptp(v) * me.low_passed_rate(v, dt, 1.5e-3)
     y = y + 0.002 * np.ptp(y) * rng.standard_normal(len(y))
     return np.arange(len(v)) * dt, v, y
 

@@ -150,7 +150,7 @@ def test_holdout4_mechanisms_follow_their_laws():
     # the low-passed rate of a ramp rises to the ramp's slope as 1 - exp(-t/tau)
     dt, tau = 1e-3, 4e-3
     ramp = 3.0 * np.arange(400) * dt
-    lp = h4._low_passed_rate(ramp, dt, tau)
+    lp = me.low_passed_rate(ramp, dt, tau)
     k = np.arange(1, 400)
     np.testing.assert_allclose(lp[k], 3.0 * (1 - np.exp(-(k + 1) * dt / tau)), rtol=1e-9)
     # the cooling stage's offset falls: the output's mean over the last second lies below

@@ -32,14 +32,7 @@ def _rng(seed, salt):
 def eddy_current(v, dt, coefficient, tau):
     """A rate term ``coefficient * dv/dt`` through a first-order low-pass of time constant tau
     (the classical eddy-current field of a laminated core, Bertotti 1998, ch. 12)."""
-    dv = np.gradient(np.asarray(v, float), dt)
-    a = np.exp(-dt / tau)
-    out = np.empty_like(dv)
-    acc = 0.0
-    for k, x in enumerate(dv):
-        acc = a * acc + (1 - a) * x
-        out[k] = acc
-    return coefficient * out
+    return coefficient * me.low_passed_rate(v, dt, tau)
 
 
 @case

@@ -29,18 +29,6 @@ def _rng(seed, salt):
     return np.random.default_rng([seed, 4000 + salt])
 
 
-def _low_passed_rate(v, dt, tau):
-    """dv/dt (central differences) through a first-order low-pass of time constant tau."""
-    dv = np.gradient(np.asarray(v, float), dt)
-    a = np.exp(-dt / tau)
-    out = np.empty_like(dv)
-    acc = 0.0
-    for k, x in enumerate(dv):
-        acc = a * acc + (1 - a) * x
-        out[k] = acc
-    return out
-
-
 @case
 def clean_slow_triangles(seed):
     rng = _rng(seed, 1)
@@ -58,7 +46,7 @@ def rate_eddy_two_time_constants(seed):
     v = np.concatenate([ex.triangles(dt, 7_000, f, 45.0, decay=0.5) for f in (0.4, 4.0, 15.0)])
     h = me.play_core(v, 100.0)
     k = rng.uniform(1.0, 1.5) * np.ptp(h) / np.ptp(v) * 1e-3
-    y = h + k * (0.6 * _low_passed_rate(v, dt, 1e-3) + 0.4 * _low_passed_rate(v, dt, 6e-3))
+    y = h + k * (0.6 * me.low_passed_rate(v, dt, 1e-3) + 0.4 * me.low_passed_rate(v, dt, 6e-3))
     return finish("holdout4_rate_eddy_two_time_constants", seed, np.arange(len(v)) * dt, v, y,
                   {"rate_dependence"}, "either", "eddy-current term with two time constants, triangles", rng)
 

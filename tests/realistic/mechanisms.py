@@ -212,6 +212,19 @@ def fractional_delay(v, delay_samples):
     return np.interp(k, np.arange(len(v)), v, left=v[0])
 
 
+def low_passed_rate(v, dt, tau):
+    """dv/dt (central differences) through a first-order low-pass of time constant tau:
+    an eddy-current field of a laminated core is proportional to it (Bertotti 1998, ch. 12)."""
+    dv = np.gradient(np.asarray(v, float), dt)
+    a = np.exp(-dt / tau)
+    out = np.empty_like(dv)
+    acc = 0.0
+    for k, x in enumerate(dv):
+        acc = a * acc + (1 - a) * x
+        out[k] = acc
+    return out
+
+
 def butterfly(p, scale):
     """Strain of a ferroelectric: proportional to the square of the polarisation p.
 
