@@ -100,11 +100,14 @@ class Diagnosis:
     def __init__(self, **kw):
         self.__dict__.update(kw)
 
+    def _with_ties(self, effect):
+        """`effect` with its near ties, e.g. "delay (or rate_dependence)"."""
+        alts = self.ambiguous.get(effect)
+        return effect + (f" (or {' or '.join(alts)})" if alts else "")
+
     def _final_name(self):
         """The final model's parts, e.g. "PI + creep + drift" (tentative ones said so)."""
-        amb = self.ambiguous
-        names = " + ".join(["PI"] + [e + (f" (or {' or '.join(amb[e])})" if e in amb else "")
-                                     for e in (self.tentative or self.effects)])
+        names = " + ".join(["PI"] + [self._with_ties(e) for e in (self.tentative or self.effects)])
         return names + (" (tentative, not named)" if self.tentative else "")
 
     def _pct(self, x):
@@ -176,8 +179,7 @@ class Diagnosis:
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
         tent = self.tentative
-        named = [e + (f" (or {' or '.join(self.ambiguous[e])})" if e in self.ambiguous else "")
-                 for e in self.effects]
+        named = [self._with_ties(e) for e in self.effects]
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"
                      + (f" (tentative, not named: {', '.join(tent)})" if tent else "") + "; held-out RMS "
                      f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")

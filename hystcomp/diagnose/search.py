@@ -347,7 +347,7 @@ def _alternatives(steps, chosen):
         acc = st["evidence"].get("acceptable", {})
         kind = (st["evidence"].get("revised") or {}).get("by") or st["evidence"]["extension"]["kind"]
         gain = acc.get(kind)
-        if gain is None or gain <= 0:
+        if gain is None:
             continue        # a paired step, or a part put in by the revision
         best = {}
         for k, g in acc.items():
@@ -407,8 +407,8 @@ def play_thresholds(span, n):
     --------
     >>> play_thresholds(2.0, 4).tolist()
     [0.0, 0.25, 0.5, 0.75]
-    >>> play_thresholds(1.0, 8).round(3).tolist()
-    [0.0, 0.125, 0.25, 0.375, 0.5, 0.625, 0.75, 0.875]
+    >>> play_thresholds(1.0, 12).round(4).tolist()
+    [0.0, 0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375, 0.5, 0.625, 0.75, 0.875]
     """
     half = 0.5 * span
     if half >= 0.75 or n <= 2 * LOADING_PLAYS:
