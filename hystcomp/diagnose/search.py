@@ -367,7 +367,8 @@ def base_context(rec, n_thresholds=20, thresholds=None):
     """The parts' :class:`~hystcomp.identify.parts.Context` of a record:
     its scaling and clock, and the base model's play thresholds (`thresholds`
     in input units when given, else :func:`play_thresholds`)."""
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds)
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds,
+                  fit_end=None if rec.dt is None else rec.k_val * rec.dt)
     if thresholds is not None:
         r = np.asarray(thresholds, dtype=np.float64) / rec.scale
         ctx.thresholds = np.concatenate([[0.0], r[r > 0]])

@@ -44,6 +44,11 @@ class Context:
     noise : float
         Noise floor of the output [output units] (parts that mask samples use
         it).
+    fit_end : float or None
+        Time [s] at which the samples the weights are fitted on end (the
+        diagnosis holds out the rest); default `duration`.  Parts whose
+        time functions must be extrapolated beyond it (:class:`SlowDrift`)
+        place their knots before it.
 
     Examples
     --------
@@ -52,7 +57,7 @@ class Context:
     ([0.0, 0.25, 0.5, 0.75, 1.0], [0.0, 0.1])
     """
 
-    def __init__(self, v, dt, origin, scale, duration, n_thresholds=20, noise=0.0):
+    def __init__(self, v, dt, origin, scale, duration, n_thresholds=20, noise=0.0, fit_end=None):
         self.v = np.ascontiguousarray(v, dtype=np.float64)
         self.n = self.v.size
         self.dt = None if dt is None else float(dt)
@@ -64,6 +69,7 @@ class Context:
         self.thresholds = np.arange(self.n_thresholds) / self.n_thresholds
         self.noise = float(noise)
         self.time = None if self.dt is None else np.arange(self.n) * self.dt
+        self.fit_end = self.duration if fit_end is None else float(fit_end)
 
     def like(self, v):
         """The same context for another input `v` (same scaling and clock).
@@ -77,7 +83,8 @@ class Context:
         -------
         Context
         """
-        ctx = Context(v, self.dt, self.origin, self.scale, self.duration, self.n_thresholds, self.noise)
+        ctx = Context(v, self.dt, self.origin, self.scale, self.duration, self.n_thresholds, self.noise,
+                      self.fit_end)
         ctx.thresholds = self.thresholds.copy()      # set thresholds carry over (diagnose sets its own)
         return ctx
 

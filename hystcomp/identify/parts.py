@@ -19,11 +19,12 @@ in one of five places (its ``slot``), applied in this order:
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
     a linear stage after the hysteresis; :class:`GainDrift`);
 ``additive``
-    adds columns of its own (:class:`Creep`, :class:`Drift`, and the
-    offset);
+    adds columns of its own (:class:`Creep`, :class:`Drift`,
+    :class:`SlowDrift`, and the offset);
 ``output``
     maps the linear prediction (:class:`OutputClip`: clipping of the output
-    side), and says which samples the linear solve may use.
+    side; :class:`OutputTanh`, :class:`OutputRational`: smooth saturation),
+    and says which samples the linear solve may use.
 
 :class:`PICore` (thresholds spread up to the full input span, eq. 18) is
 always there.  :mod:`hystcomp.identify.search` builds the columns of a set
@@ -45,9 +46,11 @@ from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa:
 from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, Saturation)
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic,  # noqa: F401
-                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift)
-from .parts_output import OutputClip, OutputTanh  # noqa: F401
+                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
+                             SlowDrift)
+from .parts_output import OutputClip, OutputRational, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
-           "Drift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh", "register", "PARTS"]
+           "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh",
+           "OutputRational", "register", "PARTS"]

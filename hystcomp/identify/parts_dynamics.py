@@ -12,7 +12,7 @@ from ._part_kernels import fractional_delay
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
 __all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
-           "OutputQuadratic", "OutputCubic", "Drift", "SensorDrift"]
+           "OutputQuadratic", "OutputCubic", "Drift", "SlowDrift", "SensorDrift"]
 
 
 # ----------------------------------------------------------------------------
@@ -393,6 +393,50 @@ class Drift(Part):
         t = ctx.time
         D = np.column_stack([t / ctx.duration, -np.expm1(-t / values["time_constant"])])
         return D, np.full(2, -np.inf), np.full(2, np.inf), ["drift_linear", "drift_exponential"]
+
+
+#: segments of the slow drift's broken line over the fitted part of the record
+SLOW_DRIFT_SEGMENTS = 6
+
+
+@register
+class SlowDrift(Part):
+    """An offset drift of no set shape (a random walk, a thermal cycle, a
+    fixture settling): a broken line in time with ``SLOW_DRIFT_SEGMENTS``
+    equal segments over the fitted part of the record (``0 ... fit_end``),
+    held at its last level after it.  Held level is the forecast of a
+    drift whose next step is as likely up as down (a random walk); the
+    parametric :class:`Drift` extrapolates its trend instead.  Columns: the
+    hat functions of the knots after ``t = 0`` (the level at ``t = 0`` is
+    the core's offset); no nonlinear parameter.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(8), 1.0, 0.0, 1.0, 8.0, fit_end=6.0)
+    >>> D = SlowDrift().columns({}, ctx)[0]
+    >>> D.shape, D[:, -1].round(2).tolist()
+    ((8, 6), [0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 1.0, 1.0])
+    >>> bool(np.allclose(D[:7].sum(axis=1)[1:], 1.0))   # the hats add up to 1 after t = 0
+    True
+    """
+
+    effect = "drift"
+    kind = "slow_drift"
+    slot = "additive"
+    order = 21
+    needs_time = True
+    description = "offset drift of no set shape: a broken line in time, held at its last level"
+
+    def columns(self, values, ctx):
+        k = SLOW_DRIFT_SEGMENTS
+        T = ctx.fit_end if ctx.fit_end else ctx.duration
+        s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
+        D = np.clip(1.0 - np.abs(s[:, None] - np.arange(1, k + 1)[None, :]), 0.0, None)
+        names = [f"slow_drift_{i}" for i in range(1, k + 1)]
+        return D, np.full(k, -np.inf), np.full(k, np.inf), names
+
+    def describe(self, values):
+        return {"part": self.description, "segments": SLOW_DRIFT_SEGMENTS}
 
 
 @register
