@@ -23,7 +23,7 @@ in one of five places (its ``slot``), applied in this order:
     :class:`SlowDrift`, and the offset);
 ``output``
     maps the linear prediction (:class:`OutputClip`: clipping of the output
-    side; :class:`OutputTanh`, :class:`OutputRational`: smooth saturation),
+    side; :class:`OutputTanh`, :class:`OutputAlgebraic`: smooth saturation),
     and says which samples the linear solve may use.
 
 :class:`PICore` (thresholds spread up to the full input span, eq. 18) is
@@ -48,9 +48,9 @@ from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICor
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
                              SlowDrift)
-from .parts_output import OutputClip, OutputRational, OutputTanh  # noqa: F401
+from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh",
-           "OutputRational", "register", "PARTS"]
+           "OutputAlgebraic", "register", "PARTS"]

@@ -6,7 +6,7 @@ import numpy as np
 
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["OutputClip", "OutputTanh", "OutputRational"]
+__all__ = ["OutputClip", "OutputTanh", "OutputAlgebraic"]
 
 #: largest shift of the output tanh's centre from the output's mid-range, in half-spans
 CENTRE = 0.3
@@ -163,31 +163,34 @@ ONE_SIDED_SPAN = 1.5
 
 
 @register
-class OutputRational(OutputTanh):
-    """Saturation on the output side that approaches its limit slowly,
-    ``y = c + S z / (1 + |z|)`` with ``z = (u - c)/S`` for the linear
-    prediction u: the Frohlich-Kennelly law of magnetic saturation,
-    ``M = H / (a + b |H|)`` (Jiles, *Introduction to Magnetism and Magnetic
-    Materials*, 3rd ed., 2015, sec. 5.4), whose distance to the limit falls as
-    ``1/u`` where :class:`OutputTanh`'s falls as ``exp(-2u/S)``.  On a
-    one-sided record (a unipolar stroke: the input's span is less than 1.5
-    times its scale) the centre ``c`` may sit anywhere in the output's range,
-    so that only the end away from rest saturates; on a two-sided record it
-    stays within ``CENTRE`` half-spans of the mid-range as the tanh's does.
-    The linear solve fits ``u`` to ``c + S r/(1 - |r|)``, ``r = (y - c)/S``,
-    weighted by the map's slope squared ``(1 - |r|)^4``.
+class OutputAlgebraic(OutputTanh):
+    """Saturation on the output side with a knee of any sharpness, the
+    algebraic sigmoid ``y = c + S z / (1 + |z|^p)^(1/p)``, ``z = (u - c)/S``,
+    for the linear prediction u.  ``p = 1`` is the Frohlich-Kennelly law of
+    magnetic saturation, ``M = H / (a + b |H|)`` (Jiles, *Introduction to
+    Magnetism and Magnetic Materials*, 3rd ed., 2015, sec. 5.4), whose
+    distance to the limit falls as ``1/u``; larger ``p`` sharpen the knee
+    (``p`` about 2.5 is close to :class:`OutputTanh`, ``p -> inf`` a clip).
+    On a one-sided record (a unipolar stroke: the input's span is less than
+    1.5 times its scale) the centre ``c`` may sit anywhere in the output's
+    range, so that only the end away from rest saturates; on a two-sided
+    record it stays within ``CENTRE`` half-spans of the mid-range as the
+    tanh's does.  The linear solve fits ``u`` to the inverse map
+    ``c + S r/(1 - |r|^p)^(1/p)``, ``r = (y - c)/S``, weighted by the map's
+    slope squared.  Parameters: the limit ``S`` (in output half-spans), the
+    centre and the exponent ``p`` (0.7 ... 8).
 
     Examples
     --------
-    >>> part = OutputRational()
+    >>> part = OutputAlgebraic()
     >>> part.set_output_range(-1.0, 1.0)
     >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
-    >>> part.output(np.array([0.0, 1.5, 1e6]), {"limit": 1.5, "centre": 0.0}, ctx).round(4).tolist()
+    >>> part.output(np.array([0.0, 1.5, 1e6]), {"limit": 1.5, "centre": 0.0, "exponent": 1.0}, ctx).round(4).tolist()
     [0.0, 0.75, 1.5]
     """
 
-    kind = "output_rational"
-    description = "slowly saturating output map y = c + S z/(1 + |z|), z = (u - c)/S"
+    kind = "output_algebraic"
+    description = "algebraic saturating output map y = c + S z/(1 + |z|^p)^(1/p), z = (u - c)/S"
 
     @staticmethod
     def _one_sided(ctx):
@@ -195,28 +198,33 @@ class OutputRational(OutputTanh):
 
     def parameters(self, ctx, kinds):
         c = 1.0 if self._one_sided(ctx) else CENTRE
-        return [Parameter("limit", 2.0, 0.97, 40.0, True), Parameter("centre", 0.0, -c, c, False)]
+        return [Parameter("limit", 2.0, 0.97, 40.0, True), Parameter("centre", 0.0, -c, c, False),
+                Parameter("exponent", 1.5, 0.7, 8.0, True)]
 
     def initial_values(self, ctx, kinds):
-        out = [{"limit": L, "centre": 0.0} for L in (1.05, 1.4, 2.5, 6.0)]
+        out = [{"limit": L, "centre": 0.0, "exponent": p} for L in (1.05, 1.4, 2.5, 6.0) for p in (1.0, 2.0)]
         if self._one_sided(ctx):
             # the rest end of a unipolar stroke: the start of the record
             x = ctx.x
             side = -1.0 if abs(x[0] - x.min()) <= abs(x[0] - x.max()) else 1.0
-            out += [{"limit": L, "centre": side} for L in (2.5, 4.0, 8.0)]
+            out += [{"limit": L, "centre": side, "exponent": p} for L in (2.5, 4.0, 8.0) for p in (1.0, 2.0)]
         return out
 
     def target(self, y, values, ctx):
         c, S = self._map(values)
+        p = values["exponent"]
         r = np.clip((y - c) / S, -0.98, 0.98)
-        return c + S * r / (1.0 - np.abs(r)), (1.0 - np.abs(r)) ** 4
+        a = np.abs(r) ** p
+        return c + S * r / (1.0 - a) ** (1.0 / p), (1.0 - a) ** (2.0 + 2.0 / p)
 
     def output(self, u, values, ctx):
         c, S = self._map(values)
+        p = values["exponent"]
         z = (u - c) / S
-        return c + S * z / (1.0 + np.abs(z))
+        return c + S * z / (1.0 + np.abs(z) ** p) ** (1.0 / p)
 
     def output_slope(self, u, values, ctx):
         """d output / d u (for the Gauss-Newton refinement of the weights)."""
         c, S = self._map(values)
-        return 1.0 / (1.0 + np.abs((u - c) / S)) ** 2
+        p = values["exponent"]
+        return (1.0 + np.abs((u - c) / S) ** p) ** (-1.0 - 1.0 / p)
