@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, TUNING, family
+from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, TUNING, family
 from realistic import excitations as ex
 from realistic import mechanisms as me
 
@@ -114,9 +114,9 @@ def test_sets_are_disjoint_and_large_enough():
     assert family({"gain_drift", "drift", "output_saturation"}) == {"drift", "saturation"}
 
 
-@pytest.mark.parametrize("name", sorted(ALL) + sorted(HOLDOUT4))
+@pytest.mark.parametrize("name", sorted(ALL) + sorted(HOLDOUT5))
 def test_every_case_builds_a_finite_record(name):
-    cases = {**ALL, **HOLDOUT4}
+    cases = {**ALL, **HOLDOUT5}
     r = cases[name](0)
     assert np.isfinite(r.v).all() and np.isfinite(r.y).all() and len(r.v) == len(r.y) >= 5000
     assert r.t is None or (len(r.t) == len(r.v) and np.all(np.diff(r.t) > 0))
@@ -134,14 +134,40 @@ def test_holdout3_was_measured_and_joined_all():
     assert set(HOLDOUT3) <= set(ALL) and len(HOLDOUT3) >= 10
 
 
-def test_holdout4_is_apart_and_new():
+def test_holdout4_was_measured_and_joined_all():
+    assert set(HOLDOUT4) <= set(ALL) and len(HOLDOUT4) >= 10
+
+
+def test_holdout5_is_apart_and_new():
     # the fresh set is not in ALL (the acceptance test does not see it) and names no case twice
-    assert not set(HOLDOUT4) & set(ALL) and len(HOLDOUT4) >= 10
-    assert {r for n in HOLDOUT4 for r in HOLDOUT4[n](0).expect_effects} >= {
-        "creep", "drift", "gain_drift", "output_saturation", "rate_dependence", "initial_state", "delay"}
-    assert any(HOLDOUT4[n](0).expect_verdict == "unexplained" for n in HOLDOUT4)
-    assert any(not HOLDOUT4[n](0).expect_effects and HOLDOUT4[n](0).expect_verdict == "explained"
-               for n in HOLDOUT4)
+    assert not set(HOLDOUT5) & set(ALL) and len(HOLDOUT5) >= 10
+    assert {r for n in HOLDOUT5 for r in HOLDOUT5[n](0).expect_effects} >= {
+        "creep", "drift", "gain_drift", "output_saturation", "rate_dependence", "initial_state", "saturation",
+        "asymmetry"}
+    assert any(HOLDOUT5[n](0).expect_verdict == "unexplained" for n in HOLDOUT5)
+    assert any(not HOLDOUT5[n](0).expect_effects and HOLDOUT5[n](0).expect_verdict == "explained"
+               for n in HOLDOUT5)
+
+
+def test_holdout5_mechanisms_follow_their_laws():
+    from realistic import cases_holdout5 as h5
+
+    # Langevin: x/3 near 0 (series x/3 - x^3/45), 1 - 1/x far out (error e^-2x)
+    x = np.array([1e-3, 0.1, 20.0, 40.0])
+    L = h5.langevin(x)
+    np.testing.assert_allclose(L[:2], x[:2] / 3 - x[:2] ** 3 / 45, rtol=1e-6)
+    np.testing.assert_allclose(L[2:], 1 - 1 / x[2:], rtol=1e-12)
+    assert np.all(np.diff(h5.langevin(np.linspace(-5, 5, 101))) > 0)
+    # the chirp's instantaneous frequency runs from f0 to f1: zero crossings per second
+    dt = 1e-4
+    c = h5.chirp(dt, 100_000, 1.0, 20.0, 1.0)
+    flips = np.flatnonzero(np.diff(np.sign(c)) != 0)
+    first, last = np.sum(flips < 10_000), np.sum(flips >= 90_000)
+    assert 2 <= first <= 6 and 36 <= last <= 42      # about 2 x 1.95 and 2 x 19.05 per second
+    # the slip is a step of the offset: output minus core, before and after, differ by the step
+    r = h5.HOLDOUT5["holdout5_drift_slip_step"](0)
+    off = r.y - me.play_core(r.v, 100.0)
+    assert abs(off[-2000:].mean() - off[:2000].mean()) > 20 * r.noise_std
 
 
 def test_holdout4_mechanisms_follow_their_laws():
