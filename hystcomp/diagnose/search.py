@@ -492,6 +492,8 @@ TIE = 0.1
 #: revised fits within this many noise variances (held-out mean square) of the
 #: best are equally good: the one with the fewest nonlinear parameters is kept
 PARSIMONY = 0.05
+#: other parts of a chosen effect refitted in its place once later effects are in
+SAME_EFFECT_FORMS = 2
 
 
 def _refit(vp, ctx, st, start, rms_val, new=None, starts=()):
@@ -513,9 +515,10 @@ def _refit(vp, ctx, st, start, rms_val, new=None, starts=()):
 
 def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say):
     """Revisit the effects chosen greedily once all are in (a floating
-    search): a part whose step was a near tie with another effect's part is
-    replaced by it when that lowers the held-out RMS with the later effects in
-    the model; then a part whose removal raises the held-out mean square by
+    search): a part whose step was a near tie with another effect's part, or
+    (for every step but the last) one of the ``SAME_EFFECT_FORMS`` other
+    parts of its effect that fitted best at its step, is replaced by it when
+    that lowers the held-out RMS with the later effects in the model; then a part whose removal raises the held-out mean square by
     less than MIN_GAIN noise variances is dropped (a later effect made it
     redundant).  Returns the structure, the fit point and the revisions."""
     revisions = []
@@ -528,6 +531,14 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         alts = sorted((r, k) for k, r in trials.items()
                       if k != kind and r ** 2 - trials[kind] ** 2 <= margin
                       and (PARTS[k].effect == chosen[j] or PARTS[k].effect not in chosen))
+        near = {k for _, k in alts}
+        if j < len(chosen_kinds) - 1:
+            # the same effect's other forms, with the later effects in the model: a
+            # shapeless drift chosen first may have stood in for a trend that the
+            # parametric drift draws once creep is in (SAME_EFFECT_FORMS best at its step)
+            same = sorted((r, k) for k, r in trials.items() if k != kind and PARTS[k].effect == chosen[j]
+                          and (r, k) not in alts)
+            alts += same[:SAME_EFFECT_FORMS]
         tried = [(kind, struct, cur)]
         for _, alt in alts:
             cls = PARTS[alt]
@@ -559,8 +570,10 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
             cls = PARTS[alt]
             revisions.append({"step": j + 1, "replaced": kind, "by": alt, "effect_before": chosen[j],
                               "effect_after": cls.effect, "rms_before": rms_val(cur), "rms_after": rms_val(pt),
-                              "reason": "near tie at its step; the other part fits better with the later "
-                                        "effects in the model"})
+                              "reason": ("near tie at its step; the other part fits better with the later "
+                                         "effects in the model") if alt in near else
+                                        ("another form of the same effect fits better with the later effects "
+                                         "in the model")})
             steps[j]["effect"] = cls.effect
             steps[j]["evidence"]["revised"] = revisions[-1]
             chosen[j], chosen_kinds[j] = cls.effect, alt
