@@ -57,7 +57,7 @@ from numba import njit
 # re-exported: every kernel name is importable from this module
 from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
-    _tanh, _fma, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
+    _tanh, _fma, _is_finite, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
     _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
     _vd_general_call, _fmplay)
@@ -82,18 +82,54 @@ _SUM_FLAGS = {"reassoc", "contract"}
 _vd = None
 
 
+# Calls of `pi_sum` on at least this many samples run on aligned copies of
+# the operator arrays (below it, compiled loops call it one sample at a
+# time: no allocation there).
+_PI_COPY_MIN = 64
+
+
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS)
 def pi_sum(v, r, p, p0, z, scale, out):
     """PI model (eq. 18), scaled by `scale` (a Linear envelope):
     ``out = scale * (p0 v + sum_i p_i F_ri[v])``; `z` updated in place.
 
     Branch-free play update ``z_i = min(max(z_i, v - r_i), v + r_i)`` with a
-    reassociated sum over operators (vectorised).
+    reassociated sum over operators (vectorised).  A record of at least
+    `_PI_COPY_MIN` samples runs on copies of `r`, `p` and `z` made by numba,
+    32-byte aligned: the caller's arrays may sit anywhere, and a SIMD load or
+    store that straddles a 4 KiB page (z is loaded and stored at every
+    sample) made a call 1.5-3.5x slower, depending on where the allocator
+    had put the 160 bytes of a 20-operator state (benchmarks/README.md).
+    The same loop runs either way (`_pi_sum_loop`): same operations, same
+    results bit for bit.
+
+    Returns the index of the first sample of `v` that is NaN or +-inf, or -1
+    when every sample is finite (tested on the exponent bits, `_is_finite`,
+    in the same pass; the samples after it are still processed).
+    `MGPI.simulate` raises the ValueError of `as_signal` from it instead of
+    a separate pass over the record: a pass over the input and a temporary
+    array less, which do not scale over threads
+    (benchmarks/bench_models.py).
     """
+    if v.size < _PI_COPY_MIN:
+        return _pi_sum_loop(v, r, p, p0, z, scale, out)
+    zz = z.copy()
+    bad = _pi_sum_loop(v, r.copy(), p.copy(), p0, zz, scale, out)
+    for i in range(z.size):   # an element loop: a slice assignment compiles numba's shape check
+        z[i] = zz[i]
+    return bad
+
+
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS, inline="always")
+def _pi_sum_loop(v, r, p, p0, z, scale, out):
+    """The sample loop of `pi_sum`."""
     n = v.size
     N = r.size
+    bad = -1
     for k in range(n):
         x = v[k]
+        if bad < 0 and not _is_finite(x):
+            bad = k
         s = 0.0
         for i in range(N):
             lo = x - r[i]
@@ -104,6 +140,7 @@ def pi_sum(v, r, p, p0, z, scale, out):
             z[i] = zi
             s += p[i] * zi
         out[k] = scale * (p0 * x + s)
+    return bad
 
 
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS, error_model="numpy")
@@ -163,12 +200,19 @@ def play_sum_kernel(kind):
 
 def run_play_sum(v, r, p, p0, z, kind, prm, out):
     """Python-side `play_sum`: same results, compiles only the kernel the
-    envelope kind needs."""
+    envelope kind needs.  Returns the index of the first non-finite sample
+    of `v` for the kinds whose kernel tests it (`checks_finite`), else -1."""
     kernel, scaled = play_sum_kernel(kind)
     if scaled:
-        kernel(v, r, p, p0, z, 1.0 if kind == IDENTITY else float(prm[0]), out)
-    else:
-        kernel(v, r, p, p0, z, kind, prm, out)
+        return kernel(v, r, p, p0, z, 1.0 if kind == IDENTITY else float(prm[0]), out)
+    kernel(v, r, p, p0, z, kind, prm, out)
+    return -1
+
+
+def checks_finite(kind):
+    """True when the `play_sum` kernel of envelope `kind` reports the first
+    non-finite input sample (`pi_sum`: the PI and Linear envelopes)."""
+    return kind == IDENTITY or kind == LINEAR
 
 
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True)
