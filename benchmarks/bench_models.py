@@ -100,22 +100,24 @@ def cpu_topology():
         return f"{n} logical CPUs"
 
 
+def on_two_threads(f1, f2):
+    """Run f1 and f2 on two new threads and wait for both."""
+    import threading
+    th = [threading.Thread(target=f) for f in (f1, f2)]
+    for t in th:
+        t.start()
+    for t in th:
+        t.join()
+
+
 def threads_ratio_of(f1, f2, repeats):
     """Best wall time of f1 and f2 one after the other, and on two threads."""
-    import threading
 
     def seq():
         f1()
         f2()
 
-    def par():
-        th = [threading.Thread(target=f) for f in (f1, f2)]
-        for t in th:
-            t.start()
-        for t in th:
-            t.join()
-
-    return best_time(seq, repeats), best_time(par, repeats)
+    return best_time(seq, repeats), best_time(lambda: on_two_threads(f1, f2), repeats)
 
 
 def threads_ratio(model, v1, v2, repeats):
@@ -312,6 +314,9 @@ def main(argv=None):
             thr["control"] = tcp / tcs
     print(f"  {'control':10s} one after the other {tcs:.3f} s, two threads {tcp:.3f} s: ratio {tcp / tcs:.2f}"
           "  (scalar nogil loop, no memory, no SIMD: what two threads can give at this moment)")
+    t_start = best_time(lambda: on_two_threads(lambda: None, lambda: None), args.repeats)
+    print(f"  (each two-thread figure includes starting and joining its two threads: "
+          f"{1e3 * t_start:.2f} ms for two empty ones here)")
     print()
     print(f"batch: {BATCH_RUNS:,} models differing only in weights, {BATCH_SAMPLES:,} samples each")
     bat = {}

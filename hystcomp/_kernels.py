@@ -82,26 +82,16 @@ _SUM_FLAGS = {"reassoc", "contract"}
 _vd = None
 
 
-# Calls of `pi_sum` on at least this many samples run on aligned copies of
-# the operator arrays (below it, compiled loops call it one sample at a
-# time: no allocation there).
-_PI_COPY_MIN = 64
-
-
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS)
 def pi_sum(v, r, p, p0, z, scale, out):
     """PI model (eq. 18), scaled by `scale` (a Linear envelope):
     ``out = scale * (p0 v + sum_i p_i F_ri[v])``; `z` updated in place.
 
     Branch-free play update ``z_i = min(max(z_i, v - r_i), v + r_i)`` with a
-    reassociated sum over operators (vectorised).  A record of at least
-    `_PI_COPY_MIN` samples runs on copies of `r`, `p` and `z` made by numba,
-    32-byte aligned: the caller's arrays may sit anywhere, and a SIMD load or
-    store that straddles a 4 KiB page (z is loaded and stored at every
-    sample) made a call 1.5-3.5x slower, depending on where the allocator
-    had put the 160 bytes of a 20-operator state (benchmarks/README.md).
-    The same loop runs either way (`_pi_sum_loop`): same operations, same
-    results bit for bit.
+    reassociated sum over operators (vectorised).  `z` is loaded and stored
+    at every sample in SIMD vectors of 32 bytes: Python callers pass
+    32-byte aligned arrays (`run_play_sum`), since a vector that straddles a
+    4 KiB page made a call 1.9-3.5x slower (benchmarks/README.md).
 
     Returns the index of the first sample of `v` that is NaN or +-inf, or -1
     when every sample is finite (tested on the exponent bits, `_is_finite`,
@@ -111,18 +101,6 @@ def pi_sum(v, r, p, p0, z, scale, out):
     array less, which do not scale over threads
     (benchmarks/bench_models.py).
     """
-    if v.size < _PI_COPY_MIN:
-        return _pi_sum_loop(v, r, p, p0, z, scale, out)
-    zz = z.copy()
-    bad = _pi_sum_loop(v, r.copy(), p.copy(), p0, zz, scale, out)
-    for i in range(z.size):   # an element loop: a slice assignment compiles numba's shape check
-        z[i] = zz[i]
-    return bad
-
-
-@njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS, inline="always")
-def _pi_sum_loop(v, r, p, p0, z, scale, out):
-    """The sample loop of `pi_sum`."""
     n = v.size
     N = r.size
     bad = -1
@@ -204,9 +182,33 @@ def run_play_sum(v, r, p, p0, z, kind, prm, out):
     of `v` for the kinds whose kernel tests it (`checks_finite`), else -1."""
     kernel, scaled = play_sum_kernel(kind)
     if scaled:
-        return kernel(v, r, p, p0, z, 1.0 if kind == IDENTITY else float(prm[0]), out)
+        scale = 1.0 if kind == IDENTITY else float(prm[0])
+        if v.size < _ALIGN_MIN:
+            return kernel(v, r, p, p0, z, scale, out)
+        za = _aligned_copy(z)
+        bad = kernel(v, _aligned_copy(r), _aligned_copy(p), p0, za, scale, out)
+        z[:] = za
+        return bad
     kernel(v, r, p, p0, z, kind, prm, out)
     return -1
+
+
+# `run_play_sum` runs `pi_sum` on records of at least this many samples with
+# 32-byte aligned copies of the operator arrays (a few microseconds; shorter
+# calls, such as the python-control blocks' one sample per step, skip it).
+_ALIGN_MIN = 64
+
+
+def _aligned_copy(a, align=32):
+    """A copy of the 1-D float64 array `a` whose data starts on an
+    `align`-byte boundary: the caller's arrays may sit anywhere (NumPy
+    aligns to 16 bytes), so that the SIMD vectors of a kernel's
+    operator loop never straddle a cache line or a page."""
+    buf = np.empty(a.size + align // 8)
+    k = (-buf.__array_interface__["data"][0] % align) // 8
+    out = buf[k:k + a.size]
+    out[:] = a
+    return out
 
 
 def checks_finite(kind):

@@ -6,9 +6,10 @@
   bits in its own pass and reports the first non-finite one, and
   ``simulate`` raises the same ValueError as every other model before
   anything is returned.
-* A record of at least ``_PI_COPY_MIN`` samples runs on aligned copies of the
-  operator arrays: results must not depend on where the caller's arrays sit
-  nor on how a record is cut around that length.
+* `run_play_sum` runs a record of at least ``_ALIGN_MIN`` samples on 32-byte
+  aligned copies of the operator arrays: results must not depend on where
+  the caller's arrays sit nor on how a record is cut around that length, and
+  the caller's state must still be updated in place.
 
 (The time both save on two threads is measured in
 benchmarks/bench_models.py, not timed here.)
@@ -128,27 +129,38 @@ def _at_page_end(values, into, lead):
     return a
 
 
+def test_aligned_copy():
+    buf = np.arange(40.0)
+    for k in range(4):
+        a = buf[k:k + 21]
+        c = _k._aligned_copy(a)
+        assert c.__array_interface__["data"][0] % 32 == 0
+        assert np.array_equal(c, a) and c.dtype == np.float64
+        assert not np.shares_memory(c, a)
+
+
+@pytest.mark.parametrize("n", [10, 3000])   # below and above _ALIGN_MIN
 @pytest.mark.parametrize("lead", [8, 16, 24, 40, 64])
-def test_pi_sum_does_not_depend_on_where_the_arrays_sit(lead):
-    v = 8.0 * np.sin(np.linspace(0.0, 40.0, 3000))
+def test_run_play_sum_does_not_depend_on_where_the_arrays_sit(lead, n):
+    v = 8.0 * np.sin(np.linspace(0.0, 40.0, n))
     z0 = np.linspace(-0.5, 0.5, R.size)
     z_ref, y_ref = z0.copy(), np.empty(v.size)
     _k.pi_sum(v, R, P, 1.0, z_ref, 1.0, y_ref)
     buf = np.zeros((3, 1536))
     r, p, z = (_at_page_end(a, buf[j], lead) for j, a in enumerate((R, P, z0)))
     y = np.empty(v.size)
-    assert _k.pi_sum(v, r, p, 1.0, z, 1.0, y) == -1
+    assert _k.run_play_sum(v, r, p, 1.0, z, _k.IDENTITY, np.zeros(0), y) == -1
     assert np.array_equal(y, y_ref)
-    assert np.array_equal(z, z_ref)
+    assert np.array_equal(z, z_ref)   # the caller's state, updated in place
     assert np.array_equal(r, R) and np.array_equal(p, P)   # read only
 
 
 @pytest.mark.parametrize("name", list(KERNEL_CHECKED))
 def test_chunks_around_the_copy_length_equal_one_shot(name):
-    # pieces shorter than, equal to and longer than _PI_COPY_MIN (copies or
-    # not) must give the one-shot result bit for bit
+    # pieces shorter than, equal to and longer than _ALIGN_MIN (aligned
+    # copies or not) must give the one-shot result bit for bit
     m = KERNEL_CHECKED[name]
-    assert _k._PI_COPY_MIN == 64   # the sizes below straddle it
+    assert _k._ALIGN_MIN == 64   # the sizes below straddle it
     v = 9.0 * np.sin(np.linspace(0.0, 60.0, 4000)) + 0.3 * np.cos(np.linspace(0.0, 700.0, 4000))
     y_one = m.simulate(v)
     sizes = [1, 63, 64, 65, 5, 200, 2, 1000]
