@@ -222,7 +222,8 @@ class HysteresisModel:
         return False
 
     def _check_input_domain(self, x, finite=False):
-        # finite=True: x passed as_signal (finite samples), so an envelope
+        # finite=True: x passed as_signal (finite samples), or its samples
+        # are tested by the kernel (`_kernel_checks_finite`), so an envelope
         # defined on the whole real line has nothing to check (a pass over
         # the record less, holding the GIL)
         for env in self._envelopes():
