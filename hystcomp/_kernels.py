@@ -57,7 +57,7 @@ from numba import njit
 # re-exported: every kernel name is importable from this module
 from ._kernels_envelopes import (  # noqa: F401
     IDENTITY, LINEAR, TANH, ATANH, POLYNOMIAL, INVERSE_OF, CUSTOM, _INF, _specialise,
-    _tanh, _fma, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
+    _tanh, _fma, _is_finite, _fill_lanes, _poly_value, _poly_derivative, _poly_inverse, _base_value, _base_derivative,
     _base_inverse, env_value, env_derivative, env_inverse, _prm3, _fval, _fval_der,
     _slow_value, _slow_val_der, _vd_identity, _vd_closed, _vd_general, _vd_closed_call,
     _vd_general_call, _fmplay)
@@ -88,12 +88,26 @@ def pi_sum(v, r, p, p0, z, scale, out):
     ``out = scale * (p0 v + sum_i p_i F_ri[v])``; `z` updated in place.
 
     Branch-free play update ``z_i = min(max(z_i, v - r_i), v + r_i)`` with a
-    reassociated sum over operators (vectorised).
+    reassociated sum over operators (vectorised).  `z` is loaded and stored
+    at every sample in SIMD vectors of 32 bytes: Python callers pass
+    32-byte aligned arrays (`run_play_sum`), since a vector that straddles a
+    4 KiB page made a call 1.9-3.5x slower (benchmarks/README.md).
+
+    Returns the index of the first sample of `v` that is NaN or +-inf, or -1
+    when every sample is finite (tested on the exponent bits, `_is_finite`,
+    in the same pass; the samples after it are still processed).
+    `MGPI.simulate` raises the ValueError of `as_signal` from it instead of
+    a separate pass over the record: a pass over the input and a temporary
+    array less, which do not scale over threads
+    (benchmarks/bench_models.py).
     """
     n = v.size
     N = r.size
+    bad = -1
     for k in range(n):
         x = v[k]
+        if bad < 0 and not _is_finite(x):
+            bad = k
         s = 0.0
         for i in range(N):
             lo = x - r[i]
@@ -104,6 +118,7 @@ def pi_sum(v, r, p, p0, z, scale, out):
             z[i] = zi
             s += p[i] * zi
         out[k] = scale * (p0 * x + s)
+    return bad
 
 
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True, fastmath=_SUM_FLAGS, error_model="numpy")
@@ -163,12 +178,43 @@ def play_sum_kernel(kind):
 
 def run_play_sum(v, r, p, p0, z, kind, prm, out):
     """Python-side `play_sum`: same results, compiles only the kernel the
-    envelope kind needs."""
+    envelope kind needs.  Returns the index of the first non-finite sample
+    of `v` for the kinds whose kernel tests it (`checks_finite`), else -1."""
     kernel, scaled = play_sum_kernel(kind)
     if scaled:
-        kernel(v, r, p, p0, z, 1.0 if kind == IDENTITY else float(prm[0]), out)
-    else:
-        kernel(v, r, p, p0, z, kind, prm, out)
+        scale = 1.0 if kind == IDENTITY else float(prm[0])
+        if v.size < _ALIGN_MIN:
+            return kernel(v, r, p, p0, z, scale, out)
+        za = _aligned_copy(z)
+        bad = kernel(v, _aligned_copy(r), _aligned_copy(p), p0, za, scale, out)
+        z[:] = za
+        return bad
+    kernel(v, r, p, p0, z, kind, prm, out)
+    return -1
+
+
+# `run_play_sum` runs `pi_sum` on records of at least this many samples with
+# 32-byte aligned copies of the operator arrays (a few microseconds; shorter
+# calls, such as the python-control blocks' one sample per step, skip it).
+_ALIGN_MIN = 64
+
+
+def _aligned_copy(a, align=32):
+    """A copy of the 1-D float64 array `a` whose data starts on an
+    `align`-byte boundary: the caller's arrays may sit anywhere (NumPy
+    aligns to 16 bytes), so that the SIMD vectors of a kernel's
+    operator loop never straddle a cache line or a page."""
+    buf = np.empty(a.size + align // 8)
+    k = (-buf.__array_interface__["data"][0] % align) // 8
+    out = buf[k:k + a.size]
+    out[:] = a
+    return out
+
+
+def checks_finite(kind):
+    """True when the `play_sum` kernel of envelope `kind` reports the first
+    non-finite input sample (`pi_sum`: the PI and Linear envelopes)."""
+    return kind == IDENTITY or kind == LINEAR
 
 
 @njit(cache=True, no_cfunc_wrapper=True, nogil=True)

@@ -77,6 +77,23 @@ def _pow2_of_shifted(typingctx, t):
 
 
 @intrinsic
+def _is_finite(typingctx, x):
+    """True when the float64 `x` is neither NaN nor +-inf, from its exponent
+    bits (all ones for NaN and inf), so that no fastmath flag can fold the
+    test away (a float comparison such as ``x - x == 0`` may be, under
+    ``nnan``/``ninf``).  One integer AND and compare, no branch."""
+    sig = numba_types.boolean(numba_types.float64)
+
+    def codegen(context, builder, signature, args):
+        (v,) = args
+        i64 = ir.IntType(64)
+        expo = ir.Constant(i64, 0x7FF0000000000000)
+        bits = builder.and_(builder.bitcast(v, i64), expo)
+        return builder.icmp_unsigned("!=", bits, expo)
+    return sig, codegen
+
+
+@intrinsic
 def _fma(typingctx, x, y, z):
     """``x * y + z`` with one rounding (llvm.fma: the FMA instruction of the
     CPU, in SIMD lanes too).  Written out rather than left to the compiler's

@@ -26,8 +26,12 @@ def as_float_array(x, name):
         ) from None
 
 
-def as_signal(x, name="v", min_length=1):
+def as_signal(x, name="v", min_length=1, finite=True):
     """Return `x` as a contiguous 1-D float64 array with finite samples.
+
+    `finite` False skips the test of the samples: for a caller whose
+    compiled kernel finds the first non-finite sample in its own pass and
+    raises `non_finite_error` before returning anything.
 
     Raises
     ------
@@ -46,14 +50,19 @@ def as_signal(x, name="v", min_length=1):
         raise ValueError(
             f"Parameter {name} has {arr.size} samples but at least {min_length} are needed"
         )
-    bad = ~np.isfinite(arr)
-    if bad.any():
-        k = int(np.argmax(bad))
-        raise ValueError(
-            f"Parameter {name} holds a non-finite value ({arr[k]}) at sample index {k}; "
-            "expected finite numbers"
-        )
+    if finite:
+        bad = ~np.isfinite(arr)
+        if bad.any():
+            raise non_finite_error(arr, int(np.argmax(bad)), name)
     return arr
+
+
+def non_finite_error(arr, k, name="v"):
+    """The ValueError of `as_signal` for the non-finite sample ``arr[k]``."""
+    return ValueError(
+        f"Parameter {name} holds a non-finite value ({arr[k]}) at sample index {k}; "
+        "expected finite numbers"
+    )
 
 
 def as_thresholds(thresholds, name="thresholds", allow_zero=False):

@@ -24,7 +24,8 @@ import numpy as np
 
 from . import _batch
 from . import _kernels as _k
-from ._validation import as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_weights
+from ._validation import (as_float_array, as_scalar, as_signal, as_state, as_thresholds, as_weights,
+                          non_finite_error)
 from .envelopes import Envelope, Identity, Linear, envelope_from_dict, extended_values as _extended
 from .operators import modified_play
 
@@ -152,7 +153,8 @@ class HysteresisModel:
         """
         if np.ndim(v) == 2:
             return _batch.simulate_columns(self, v, initial_state, return_state)
-        x = as_signal(v, "v")
+        # a kernel that tests the samples itself spares as_signal's pass
+        x = as_signal(v, "v", finite=not self._kernel_checks_finite())
         self._check_input_domain(x, finite=True)
         virgin = self.default_state()
         state = virgin if initial_state is None else as_state(initial_state, self.n_states, virgin=virgin)
@@ -213,8 +215,15 @@ class HysteresisModel:
         """ValueError naming ``initial_state`` for a state this model cannot hold
         (none by default; the symmetric mGPI checks its play positions)."""
 
+    def _kernel_checks_finite(self):
+        """True when ``_simulate`` finds non-finite samples itself (in its
+        compiled kernel's pass) and raises `as_signal`'s ValueError naming
+        ``v`` before returning; `simulate` then skips `as_signal`'s test."""
+        return False
+
     def _check_input_domain(self, x, finite=False):
-        # finite=True: x passed as_signal (finite samples), so an envelope
+        # finite=True: x passed as_signal (finite samples), or its samples
+        # are tested by the kernel (`_kernel_checks_finite`), so an envelope
         # defined on the whole real line has nothing to check (a pass over
         # the record less, holding the GIL)
         for env in self._envelopes():
@@ -461,6 +470,9 @@ class MGPI(HysteresisModel):
             return np.full(self._r.size, z0)
         return np.zeros(self._r.size + 1)
 
+    def _kernel_checks_finite(self):
+        return self.symmetric and _k.checks_finite(self.envelope_left.kernel_spec()[0])
+
     def _check_state(self, state, virgin):
         # a symmetric model's state holds play positions z_i, evaluated by
         # gamma: each must lie in gamma's domain (an open end gives an
@@ -502,7 +514,9 @@ class MGPI(HysteresisModel):
         if self.symmetric:
             kind, prm = self.envelope_left.kernel_spec()
             if kind != _k.CUSTOM:
-                _k.run_play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
+                bad = _k.run_play_sum(x, self._r, self._p, self.p0, state, kind, prm, y)
+                if bad >= 0:
+                    raise non_finite_error(x, bad, "v")
                 return y
             g = self.envelope_left
             block = np.empty((min(_BLOCK, x.size), self._r.size))
