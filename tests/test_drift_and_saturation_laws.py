@@ -61,17 +61,6 @@ def test_a_settling_offset_is_named_drift_and_held_after_it_settles():
     assert _rms_held(rep, y, v) == pytest.approx(rep.rms_heldout, rel=1e-9)
 
 
-def _langevin(x):
-    """L(x) = coth x - 1/x (paramagnetic saturation: approaches 1 as 1 - 1/x)."""
-    x = np.asarray(x, float)
-    out = np.empty_like(x)
-    small = np.abs(x) < 1e-4
-    out[small] = x[small] / 3.0
-    xs = x[~small]
-    out[~small] = 1.0 / np.tanh(xs) - 1.0 / xs
-    return out
-
-
 def _langevin_unipolar_record(seed):
     """A magnetostrictive-like output saturating as a Langevin function of the
     hysteresis, driven by a unipolar stroke 0 ... 120 V."""
@@ -79,7 +68,7 @@ def _langevin_unipolar_record(seed):
     v = ex.unipolar_triangles(18_000, 6, 120.0, decay=0.4)
     h = me.play_core(v, 120.0)
     top = rng.uniform(0.5, 0.7) * np.max(h)
-    y = top * _langevin(3.0 * h / top)
+    y = top * me.langevin(3.0 * h / top)
     y = y + 0.002 * np.ptp(y) * rng.standard_normal(y.size)
     return np.arange(v.size) * 1e-3, v, y
 

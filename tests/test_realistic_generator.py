@@ -154,13 +154,13 @@ def test_holdout5_mechanisms_follow_their_laws():
 
     # Langevin: x/3 near 0 (series x/3 - x^3/45), 1 - 1/x far out (error e^-2x)
     x = np.array([1e-3, 0.1, 20.0, 40.0])
-    L = h5.langevin(x)
+    L = me.langevin(x)
     np.testing.assert_allclose(L[:2], x[:2] / 3 - x[:2] ** 3 / 45, rtol=1e-6)
     np.testing.assert_allclose(L[2:], 1 - 1 / x[2:], rtol=1e-12)
-    assert np.all(np.diff(h5.langevin(np.linspace(-5, 5, 101))) > 0)
+    assert np.all(np.diff(me.langevin(np.linspace(-5, 5, 101))) > 0)
     # the chirp's instantaneous frequency runs from f0 to f1: zero crossings per second
     dt = 1e-4
-    c = h5.chirp(dt, 100_000, 1.0, 20.0, 1.0)
+    c = ex.chirp(dt, 100_000, 1.0, 20.0, 1.0)
     flips = np.flatnonzero(np.diff(np.sign(c)) != 0)
     first, last = np.sum(flips < 10_000), np.sum(flips >= 90_000)
     assert 2 <= first <= 6 and 36 <= last <= 42      # about 2 x 1.95 and 2 x 19.05 per second

@@ -71,19 +71,11 @@ def relay(v, low, high, state=-1.0):
     return out
 
 
-def chirp(dt, n, f0, f1, amp):
-    """A linear chirp from f0 to f1 Hz with amplitude amp (starts at 0)."""
-    t = np.arange(n) * dt
-    T = t[-1] if t[-1] > 0 else 1.0
-    phase = 2 * np.pi * (f0 * t + 0.5 * (f1 - f0) * t ** 2 / T)
-    return amp * np.sin(phase)
-
-
 @case
 def clean_chirp(seed):
     rng = _rng(seed, 1)
     dt, n = 2e-3, 15_000
-    v = chirp(dt, n, 0.05, 2.0, rng.uniform(40, 50))
+    v = ex.chirp(dt, n, 0.05, 2.0, rng.uniform(40, 50))
     y = me.play_core(v, 100.0)
     return finish("holdout2_clean_chirp", seed, np.arange(n) * dt, v, y, set(), "explained",
                   "rate-independent core under a slow chirp, noisy monitor", rng, monitor_noise=3e-4)

@@ -29,22 +29,6 @@ def _rng(seed, salt):
     return np.random.default_rng([seed, 5000 + salt])
 
 
-def langevin(x):
-    """L(x) = coth x - 1/x: paramagnetic saturation, approaching 1 as 1 - 1/x."""
-    x = np.asarray(x, float)
-    out = x / 3.0
-    big = np.abs(x) >= 1e-4
-    out[big] = 1.0 / np.tanh(x[big]) - 1.0 / x[big]
-    return out
-
-
-def chirp(dt, n, f0, f1, amp):
-    """A linear chirp from f0 to f1 Hz with amplitude amp (starts at 0)."""
-    t = np.arange(n) * dt
-    T = n * dt
-    return amp * np.sin(2 * np.pi * (f0 * t + 0.5 * (f1 - f0) * t ** 2 / T))
-
-
 @case
 def clean_random_200hz(seed):
     rng = _rng(seed, 1)
@@ -88,7 +72,7 @@ def saturation_langevin_bipolar(seed):
     v = ex.decaying_sines(dt, n, (0.5, 1.1), 50.0)
     h = me.play_core(v, 100.0)
     top = rng.uniform(0.5, 0.8) * np.max(np.abs(h))
-    y = top * langevin(3.0 * h / top)
+    y = top * me.langevin(3.0 * h / top)
     return finish("holdout5_saturation_langevin_bipolar", seed, np.arange(n) * dt, v, y, {"saturation"},
                   "either", "a magnetisation saturating as a Langevin function, bipolar sines", rng)
 
@@ -147,7 +131,7 @@ def pair_eddy_cooling(seed):
 def rate_viscoplastic_chirp(seed):
     rng = _rng(seed, 9)
     dt, n = 5e-4, 30_000
-    v = chirp(dt, n, 0.3, 15.0, 45.0)
+    v = ex.chirp(dt, n, 0.3, 15.0, 45.0)
     y = me.viscoplastic_core(v, dt, 100.0, rng.uniform(2e-3, 4e-3))
     return finish("holdout5_rate_viscoplastic_chirp", seed, np.arange(n) * dt, v, y, {"rate_dependence"},
                   "either", "viscoplastic plays under a chirp 0.3 ... 15 Hz", rng)

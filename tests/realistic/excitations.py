@@ -71,3 +71,11 @@ def unipolar_triangles(n, periods, top, decay=0.6):
     phase = periods * s
     tri01 = 1 - np.abs(2 * (phase % 1) - 1)
     return top * (1 - decay * s) * tri01
+
+
+def chirp(dt, n, f0, f1, amp):
+    """A linear chirp from f0 to f1 Hz with amplitude amp (starts at 0)."""
+    t = np.arange(n) * dt
+    T = t[-1] if t[-1] > 0 else 1.0
+    phase = 2 * np.pi * (f0 * t + 0.5 * (f1 - f0) * t ** 2 / T)
+    return amp * np.sin(phase)

@@ -274,3 +274,12 @@ def asymmetric_play_core(v, span, skew, n=200, state=None, return_state=False):
         z = np.minimum(np.maximum(z, vk - rk), vk + rk)
         y[k] = 0.35 * vk + 0.65 * (w @ z)
     return (y, z) if return_state else y
+
+
+def langevin(x):
+    """L(x) = coth x - 1/x: paramagnetic saturation, approaching 1 as 1 - 1/x (x/3 near 0)."""
+    x = np.asarray(x, float)
+    out = x / 3.0
+    big = np.abs(x) >= 1e-4
+    out[big] = 1.0 / np.tanh(x[big]) - 1.0 / x[big]
+    return out
