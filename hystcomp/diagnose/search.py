@@ -518,9 +518,10 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
     search): a part whose step was a near tie with another effect's part, or
     (for every step but the last) one of the ``SAME_EFFECT_FORMS`` other
     parts of its effect that fitted best at its step, is replaced by it when
-    that lowers the held-out RMS with the later effects in the model; then a part whose removal raises the held-out mean square by
-    less than MIN_GAIN noise variances is dropped (a later effect made it
-    redundant).  Returns the structure, the fit point and the revisions."""
+    that lowers the held-out RMS with the later effects in the model; then a
+    part whose removal raises the held-out mean square by less than MIN_GAIN
+    noise variances is dropped (a later effect made it redundant).  Returns
+    the structure, the fit point and the revisions."""
     revisions = []
     s2 = sigma ** 2
     for j in range(len(chosen_kinds)):
