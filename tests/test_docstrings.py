@@ -27,8 +27,9 @@ def _public_objects():
         mod = importlib.import_module(modname)
         for name in getattr(mod, "__all__", []):
             obj = getattr(mod, name)
-            if inspect.ismodule(obj) or getattr(obj, "__module__", modname) != modname:
-                continue  # re-exports are checked where they are defined
+            home = getattr(obj, "__module__", modname) or modname
+            if inspect.ismodule(obj) or (home != modname and not home.rsplit(".", 1)[1].startswith("_")):
+                continue  # re-exports of a public module are checked there; a private module's here
             if inspect.isfunction(obj) or inspect.isclass(obj):
                 yield f"{modname}.{name}", obj
 
