@@ -8,18 +8,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-TUNING = {}
-
-
-def case(fn):
-    TUNING[fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, salt])
+TUNING, case, _rng = case_set("", 0)
 
 
 def _sines(rng, dt=1e-3, n=20_000, freqs=(1.0,), span=100.0, offset=0.0):

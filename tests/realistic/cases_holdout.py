@@ -10,18 +10,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-HOLDOUT = {}
-
-
-def case(fn):
-    HOLDOUT["holdout_" + fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, 1000 + salt])
+HOLDOUT, case, _rng = case_set("holdout_", 1000)
 
 
 @case

@@ -14,18 +14,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-HOLDOUT2 = {}
-
-
-def case(fn):
-    HOLDOUT2["holdout2_" + fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, 2000 + salt])
+HOLDOUT2, case, _rng = case_set("holdout2_", 2000)
 
 
 def power_law_creep(u, dt, coefficient, exponent, t0=0.01):

@@ -15,18 +15,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-HOLDOUT3 = {}
-
-
-def case(fn):
-    HOLDOUT3["holdout3_" + fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, 3000 + salt])
+HOLDOUT3, case, _rng = case_set("holdout3_", 3000)
 
 
 def eddy_current(v, dt, coefficient, tau):

@@ -15,18 +15,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-HOLDOUT4 = {}
-
-
-def case(fn):
-    HOLDOUT4["holdout4_" + fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, 4000 + salt])
+HOLDOUT4, case, _rng = case_set("holdout4_", 4000)
 
 
 @case

@@ -15,18 +15,9 @@ import numpy as np
 
 from . import excitations as ex
 from . import mechanisms as me
-from .record import finish
+from .record import case_set, finish
 
-HOLDOUT5 = {}
-
-
-def case(fn):
-    HOLDOUT5["holdout5_" + fn.__name__] = fn
-    return fn
-
-
-def _rng(seed, salt):
-    return np.random.default_rng([seed, 5000 + salt])
+HOLDOUT5, case, _rng = case_set("holdout5_", 5000)
 
 
 @case

@@ -58,3 +58,22 @@ def finish(name, seed, t, v_drive, y_clean, expect, verdict, note, rng,
     sigma = output_noise * np.ptp(y_clean)
     y = y_clean + sigma * rng.standard_normal(len(y_clean))
     return Record(name, seed, t, v_rec, y, frozenset(expect), verdict, sigma, note)
+
+
+def case_set(prefix, salt_base):
+    """One set's registry: ``(cases, case, rng)``.
+
+    ``case`` registers a case function under ``prefix + its name`` in the dict
+    ``cases``; ``rng(seed, salt)`` is ``default_rng([seed, salt_base + salt])``, so the
+    sets draw from disjoint streams.
+    """
+    cases = {}
+
+    def case(fn):
+        cases[prefix + fn.__name__] = fn
+        return fn
+
+    def rng(seed, salt):
+        return np.random.default_rng([seed, salt_base + salt])
+
+    return cases, case, rng
