@@ -122,7 +122,6 @@ def bouc_wen_stage(v, dt, d=1.0, alpha=0.4, beta=0.9, gamma=0.1, n_exp=1.0, fn=6
     """
     v = np.asarray(v, float)
     wn = 2 * np.pi * fn
-    dv = np.gradient(v, dt)
     h = 0.0
     x = d * v[0]
     xd = 0.0
