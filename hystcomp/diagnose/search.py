@@ -6,6 +6,7 @@ import time
 import numpy as np
 
 from ..identify.parts import PARTS, Context
+from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import PartsModel, Structure, VariableProjection
 from .record import Record, noise_floor
 from .signatures import evidence as _evidence
@@ -412,7 +413,7 @@ def play_thresholds(span, n):
     [0.0, 0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375, 0.5, 0.625, 0.75, 0.875]
     """
     half = 0.5 * span
-    if half >= 0.75 or n <= 2 * LOADING_PLAYS:
+    if span >= ONE_SIDED_SPAN or n <= 2 * LOADING_PLAYS:     # two-sided (0.5 span is exact)
         return np.arange(n) / n
     m = n - LOADING_PLAYS
     return np.concatenate([np.arange(m) / m * half, half + np.arange(LOADING_PLAYS) / LOADING_PLAYS * (1.0 - half)])

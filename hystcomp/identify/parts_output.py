@@ -158,7 +158,7 @@ class OutputTanh(Part):
 
 
 #: input span over its scale below which a record counts as one-sided (a unipolar
-#: stroke 0 ... V has 1, a bipolar one 2), as in the diagnosis's play thresholds
+#: stroke 0 ... V has 1, a bipolar one 2); the diagnosis's play thresholds use it too
 ONE_SIDED_SPAN = 1.5
 
 
