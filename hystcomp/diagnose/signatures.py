@@ -114,7 +114,7 @@ def evidence(rec, e, pred, sigma, only=None):
 
     if only is None or only in ('creep',):
         # -- creep: relaxation during holds in the direction of the step into them
-        sig = "residual change during each hold against the sign of the step into it (either direction)"
+        sig = "residual change during each hold against the step into it (either direction)"
         moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
         n_up = sum(1 for _, _, s in moved if s > 0)
         n_dn = sum(1 for _, _, s in moved if s < 0)
@@ -130,7 +130,12 @@ def evidence(rec, e, pred, sigma, only=None):
                 m = max(2, (j - k) // 5)
                 rows.append((math.copysign(1.0, s), float(e[j - m:j].mean() - e[k:k + m].mean()), (j - k) * rec.dt))
             R = np.array(rows)
-            X = np.column_stack([R[:, 0], R[:, 2] / R[:, 2].mean()])
+            # linear creep (Kelvin-Voigt chains, logarithmic creep superposed step by
+            # step) relaxes in proportion to the step into the hold: the regressor is
+            # the signed step in units of the mean step (coefficient: the relaxation
+            # after a mean-sized step), and the hold's length
+            steps = np.array([s for _, _, s in moved])
+            X = np.column_stack([steps / np.abs(steps).mean(), R[:, 2] / R[:, 2].mean()])
             coef, *_ = np.linalg.lstsq(X, R[:, 1], rcond=None)
             res = R[:, 1] - X @ coef
             dof = max(R.shape[0] - 2, 1)
