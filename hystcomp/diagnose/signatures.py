@@ -26,6 +26,18 @@ WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "i
          "initial_state": "at the record's start"}
 
 
+#: one-sided level of 2.5 standard errors of a normal distribution
+_LEVEL_25 = 0.5 * (1.0 + math.erf(2.5 / math.sqrt(2.0)))
+
+
+def _t_quantile(dof):
+    """Student-t quantile at the level of 2.5 normal standard errors (2.5 as
+    dof -> inf; 3.8 for 5 degrees of freedom, 51 for one)."""
+    from scipy.stats import t
+
+    return float(t.ppf(_LEVEL_25, dof))
+
+
 def _rss(e, F):
     coef, *_ = np.linalg.lstsq(F, e, rcond=None)
     r = e - F @ coef
@@ -141,9 +153,11 @@ def evidence(rec, e, pred, sigma, only=None):
             dof = max(R.shape[0] - 2, 1)
             se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
             # the relaxation (in either direction: creep on, or relaxing back) must
-            # exceed 0.3 noise floors and 2.5 standard errors
+            # exceed 0.3 noise floors and the Student-t quantile of 2.5 standard
+            # errors for the holds' degrees of freedom (2.5 for many holds; 3 holds
+            # give one degree of freedom, and their standard error says little)
             stat = abs(float(coef[0])) / sigma
-            thr = max(0.3, 2.5 * se / sigma)
+            thr = max(0.3, _t_quantile(dof) * se / sigma)
             put("creep", sig, stat, round(thr, 4), holds=len(moved))
 
     if only is None or only in ('drift', 'gain_drift'):
