@@ -3,7 +3,7 @@
 import numpy as np
 import pytest
 
-from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, TUNING, family
+from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOLDOUT6, TUNING, family
 from realistic import excitations as ex
 from realistic import mechanisms as me
 
@@ -114,9 +114,9 @@ def test_sets_are_disjoint_and_large_enough():
     assert family({"gain_drift", "drift", "output_saturation"}) == {"drift", "saturation"}
 
 
-@pytest.mark.parametrize("name", sorted(ALL) + sorted(HOLDOUT5))
+@pytest.mark.parametrize("name", sorted(ALL) + sorted(HOLDOUT6))
 def test_every_case_builds_a_finite_record(name):
-    cases = {**ALL, **HOLDOUT5}
+    cases = {**ALL, **HOLDOUT6}
     r = cases[name](0)
     assert np.isfinite(r.v).all() and np.isfinite(r.y).all() and len(r.v) == len(r.y) >= 5000
     assert r.t is None or (len(r.t) == len(r.v) and np.all(np.diff(r.t) > 0))
@@ -138,15 +138,45 @@ def test_holdout4_was_measured_and_joined_all():
     assert set(HOLDOUT4) <= set(ALL) and len(HOLDOUT4) >= 10
 
 
-def test_holdout5_is_apart_and_new():
+def test_holdout5_was_measured_and_joined_all():
+    assert set(HOLDOUT5) <= set(ALL) and len(HOLDOUT5) >= 10
+
+
+def test_holdout6_is_apart_and_new():
     # the fresh set is not in ALL (the acceptance test does not see it) and names no case twice
-    assert not set(HOLDOUT5) & set(ALL) and len(HOLDOUT5) >= 10
-    assert {r for n in HOLDOUT5 for r in HOLDOUT5[n](0).expect_effects} >= {
-        "creep", "drift", "gain_drift", "output_saturation", "rate_dependence", "initial_state", "saturation",
-        "asymmetry"}
-    assert any(HOLDOUT5[n](0).expect_verdict == "unexplained" for n in HOLDOUT5)
-    assert any(not HOLDOUT5[n](0).expect_effects and HOLDOUT5[n](0).expect_verdict == "explained"
-               for n in HOLDOUT5)
+    assert not set(HOLDOUT6) & set(ALL) and len(HOLDOUT6) >= 10
+    assert {r for n in HOLDOUT6 for r in HOLDOUT6[n](0).expect_effects} >= {
+        "creep", "drift", "gain_drift", "rate_dependence", "saturation", "asymmetry", "delay"}
+    assert any(HOLDOUT6[n](0).expect_verdict == "unexplained" for n in HOLDOUT6)
+    assert any(not HOLDOUT6[n](0).expect_effects and HOLDOUT6[n](0).expect_verdict == "explained"
+               for n in HOLDOUT6)
+
+
+def test_holdout6_mechanisms_follow_their_laws():
+    from realistic import cases_holdout6 as h6
+
+    # arctangent saturation: slope 1 at 0, odd, limit `top` approached as 1/u
+    # (top - f(u) ~ 4 top^2 / (pi^2 u) for large u)
+    top = 2.0
+    u = np.array([-1e-4, 1e-4, 1e4])
+    f = h6._arctan_saturation(u, top)
+    np.testing.assert_allclose(f[:2], u[:2], rtol=1e-8)
+    np.testing.assert_allclose(top - f[2], 4 * top ** 2 / (np.pi ** 2 * u[2]), rtol=1e-6)
+    # holds of random lengths: every level held between 0.5 and 3 s
+    rng = np.random.default_rng(0)
+    dt = 1e-3
+    levels = [0.0, 10.0, -20.0, 30.0]
+    v = h6._holds_of_random_lengths(dt, levels, rng)
+    runs = np.split(v, np.flatnonzero(np.diff(v) != 0) + 1)
+    held = [len(r) * dt for r in runs if len(r) > 100]
+    assert len(held) == len(levels) and all(0.5 - dt <= h <= 3.0 + dt for h in held)
+    # the linear gain: output over the clean core rises from 1 to 1 + g (no creep)
+    r = h6.HOLDOUT6["holdout6_gain_drift_linear_staircase"](0)
+    core = me.play_core(r.v, 100.0)
+    big = np.abs(core) > 0.5 * np.abs(core).max()
+    ratio = r.y[big] / core[big]
+    k = np.flatnonzero(big)
+    assert ratio[k > 0.9 * len(r.v)].mean() > ratio[k < 0.1 * len(r.v)].mean() + 0.03
 
 
 def test_holdout5_mechanisms_follow_their_laws():

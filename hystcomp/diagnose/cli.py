@@ -3,7 +3,6 @@
 import argparse
 import json
 import os
-import math
 import sys
 
 import numpy as np

@@ -30,6 +30,8 @@ EXPLAINED = 1.5
 #: cores 0.74-0.76, every named case 0.95 or more when it leaves over 2 floors)
 NAMED_SHARE = 0.9
 OOV_FLOOR = 3.0
+#: candidates refitted jointly with the earlier parts before the search stops
+JOINT_RETRY = 2
 #: lag-1 autocorrelation above which the final residual is not taken for white noise
 WHITE = 0.6
 
@@ -132,6 +134,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         # the parts that passed every acceptance rule at this step, with their
         # held-out gain in noise variances (near ties: see _alternatives)
         step_ev["acceptable"] = dict(acceptable or {})
+        # judged after a joint refit of every nonlinear parameter (see JOINT_RETRY)
+        step_ev["refitted_jointly_before_acceptance"] = part.kind in retried
         steps.append({"effect": part.effect, "rms_before": before, "rms_after": after,
                       "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * after / rec.y_span,
                       "evidence": step_ev})
@@ -190,21 +194,48 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         # (d) it removes at least MIN_SHARE of the structure left above the noise
         # (an out-of-vocabulary misfit is only nibbled at by every part)
         excess = max(cur_val ** 2 - sigma ** 2, 1e-300) / sigma ** 2
-        ok = []
-        for j in judged:
+        def acceptable(j):
             if not (j[0] >= MIN_GAIN and j[2] < 0 and j[3]):
-                continue
+                return False
             if j[0] >= MIN_SHARE * excess:
-                ok.append(j)
-            elif j[0] >= MIN_SHARE_OWN * excess:
+                return True
+            if j[0] >= MIN_SHARE_OWN * excess:
                 # a smaller share of a residual that holds more than one misfit: the
                 # part must then remove a good part of its own signature
                 part, _, pt, _ = trials[j[1]]
                 before = _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["statistic"]
                 after_ev = _evidence(rec, rec.y - pt.prediction, pt.prediction, sigma, only=part.effect)
                 after = _signature_of(part, after_ev, rec, rec.y - pt.prediction, pt.prediction, sigma)["statistic"]
-                if before > 0 and after <= (1.0 - OWN_DROP) * before:
-                    ok.append(j)
+                return before > 0 and after <= (1.0 - OWN_DROP) * before
+            return False
+
+        ok = [j for j in judged if acceptable(j)]
+        retried = set()
+        if not ok and chosen:
+            # before the search stops: the best candidates again with every nonlinear
+            # parameter refitted jointly (warm-started), as a chosen part is; a
+            # part fitted with the earlier parts frozen may undersell what it adds
+            retry = [j for j in judged if j[3] and j[0] > 0][:JOINT_RETRY]
+            for j in retry:
+                part, st, pt, _ = trials[j[1]]
+                n_par = len(st.parameters(ctx))
+                if n_par <= _n_parameters(part, st, ctx):
+                    continue
+                try:
+                    joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
+                except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+                    continue
+                finally:
+                    tick(f"diagnose step {len(chosen) + 1}")
+                if joint.rss < pt.rss and rms_val(joint) < rms_val(pt):
+                    say(f"step {len(chosen) + 1}: {part.effect:17s} {part.kind:22s} refitted jointly: held-out RMS "
+                        f"{rms_val(joint):.4g}")
+                    trials[j[1]] = (part, st, joint, rms_val(joint))
+                    retried.add(j[1])
+                    k = judged.index(j)
+                    judged[k] = ((cur_val ** 2 - rms_val(joint) ** 2) / sigma ** 2, j[1], joint.bic - cur.bic, j[3])
+            judged.sort(reverse=True)
+            ok = [j for j in judged if acceptable(j)]
         pair = _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick)
         if pair is not None:
             (ka, kb), pt_pair, st_pair = pair

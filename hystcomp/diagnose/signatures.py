@@ -26,6 +26,18 @@ WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "i
          "initial_state": "at the record's start"}
 
 
+#: one-sided level of 2.5 standard errors of a normal distribution
+_LEVEL_25 = 0.5 * (1.0 + math.erf(2.5 / math.sqrt(2.0)))
+
+
+def _t_quantile(dof):
+    """Student-t quantile at the level of 2.5 normal standard errors (2.5 as
+    dof -> inf; 3.8 for 5 degrees of freedom, 51 for one)."""
+    from scipy.stats import t
+
+    return float(t.ppf(_LEVEL_25, dof))
+
+
 def _rss(e, F):
     coef, *_ = np.linalg.lstsq(F, e, rcond=None)
     r = e - F @ coef
@@ -114,7 +126,7 @@ def evidence(rec, e, pred, sigma, only=None):
 
     if only is None or only in ('creep',):
         # -- creep: relaxation during holds in the direction of the step into them
-        sig = "residual change during each hold against the sign of the step into it (either direction)"
+        sig = "residual change during each hold against the step into it (either direction)"
         moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
         n_up = sum(1 for _, _, s in moved if s > 0)
         n_dn = sum(1 for _, _, s in moved if s < 0)
@@ -130,15 +142,22 @@ def evidence(rec, e, pred, sigma, only=None):
                 m = max(2, (j - k) // 5)
                 rows.append((math.copysign(1.0, s), float(e[j - m:j].mean() - e[k:k + m].mean()), (j - k) * rec.dt))
             R = np.array(rows)
-            X = np.column_stack([R[:, 0], R[:, 2] / R[:, 2].mean()])
+            # linear creep (Kelvin-Voigt chains, logarithmic creep superposed step by
+            # step) relaxes in proportion to the step into the hold: the regressor is
+            # the signed step in units of the mean step (coefficient: the relaxation
+            # after a mean-sized step), and the hold's length
+            steps = np.array([s for _, _, s in moved])
+            X = np.column_stack([steps / np.abs(steps).mean(), R[:, 2] / R[:, 2].mean()])
             coef, *_ = np.linalg.lstsq(X, R[:, 1], rcond=None)
             res = R[:, 1] - X @ coef
             dof = max(R.shape[0] - 2, 1)
             se = math.sqrt(float(res @ res) / dof / R.shape[0]) if R.shape[0] > 2 else abs(coef[0])
             # the relaxation (in either direction: creep on, or relaxing back) must
-            # exceed 0.3 noise floors and 2.5 standard errors
+            # exceed 0.3 noise floors and the Student-t quantile of 2.5 standard
+            # errors for the holds' degrees of freedom (2.5 for many holds; 3 holds
+            # give one degree of freedom, and their standard error says little)
             stat = abs(float(coef[0])) / sigma
-            thr = max(0.3, 2.5 * se / sigma)
+            thr = max(0.3, _t_quantile(dof) * se / sigma)
             put("creep", sig, stat, round(thr, 4), holds=len(moved))
 
     if only is None or only in ('drift', 'gain_drift'):

@@ -17,7 +17,8 @@ in one of five places (its ``slot``), applied in this order:
     ``r_i + beta |dv/dt|``; :class:`InitialState`: a preload history);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
-    a linear stage after the hysteresis; :class:`GainDrift`);
+    a linear stage after the hysteresis; :class:`GainDrift`,
+    :class:`SlowGainDrift`);
 ``additive``
     adds columns of its own (:class:`Creep`, :class:`Drift`,
     :class:`SlowDrift`, and the offset);
@@ -47,10 +48,10 @@ from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICor
                          RateThresholds, Saturation)
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
-                             SlowDrift)
+                             SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
-           "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
+           "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

@@ -11,7 +11,7 @@ from ..effects import LinearStage, lag_bank
 from ._part_kernels import fractional_delay
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "Creep", "RateTerm",
+__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "OutputQuadratic", "OutputCubic", "Drift", "SlowDrift", "SensorDrift"]
 
 
@@ -203,6 +203,77 @@ class GainDrift(Part):
         tau = values.get("time_constant", 1e6 * ctx.duration)
         s = np.expm1(-ctx.time / tau) / np.expm1(-ctx.duration / tau)
         return columns * (1.0 + values["g"] * (s - 0.5))[:, None]
+
+
+def _time_hats(ctx, k):
+    """Hat functions of a broken line in time with `k` equal segments over
+    ``0 ... fit_end`` (held at the last knot after it): the columns of the
+    knots after ``t = 0``, shape (n, k)."""
+    T = ctx.fit_end if ctx.fit_end else ctx.duration
+    s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
+    return np.clip(1.0 - np.abs(s[:, None] - np.arange(1, k + 1)[None, :]), 0.0, None)
+
+
+#: segments of the slow gain's broken line over the fitted part of the record
+SLOW_GAIN_SEGMENTS = 4
+
+
+@register
+class SlowGainDrift(Part):
+    """A gain of no set shape (a thermal cycle, a warming that stops): the
+    hysteresis times ``1 + g(t)``, ``g`` a broken line in time with
+    ``SLOW_GAIN_SEGMENTS`` equal segments over the fitted part of the record
+    (``g(0) = 0``), held at its last level after it, as
+    :class:`SlowDrift` is for the offset.  Parameters: the gain changes at
+    the knots (``g1 ... g4``, within +-0.3); the search starts from a
+    linear fit of the current residual on the knots' hat functions times
+    the current model's output.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(5), 1.0, 0.0, 1.0, 5.0, fit_end=4.0)
+    >>> g = {"g1": 0.1, "g2": 0.2, "g3": 0.2, "g4": 0.1}
+    >>> SlowGainDrift().filter(np.ones((5, 1)), g, ctx).ravel().round(6).tolist()
+    [1.0, 1.1, 1.2, 1.2, 1.1]
+    """
+
+    effect = "gain_drift"
+    kind = "slow_gain_drift"
+    slot = "filter"
+    order = 91
+    needs_time = True
+    description = "gain of no set shape: 1 + a broken line in time, held at its last level"
+
+    def __init__(self):
+        self.driver = None
+        self._y = None
+
+    def prepare(self, y, ctx):
+        self._y = np.asarray(y, dtype=np.float64)
+
+    def attach(self, model):
+        self.driver = model
+
+    def parameters(self, ctx, kinds):
+        return [Parameter(f"g{i}", 0.0, -0.3, 0.3, False) for i in range(1, SLOW_GAIN_SEGMENTS + 1)]
+
+    def initial_values(self, ctx, kinds):
+        zero = {f"g{i}": 0.0 for i in range(1, SLOW_GAIN_SEGMENTS + 1)}
+        if self.driver is None or self._y is None or self._y.size != ctx.n:
+            return [zero]
+        h = self._driver_output(ctx)
+        fit = ctx.time <= (ctx.fit_end if ctx.fit_end else ctx.duration)
+        G = _time_hats(ctx, SLOW_GAIN_SEGMENTS) * (h - h[fit].mean())[:, None]
+        g = np.linalg.lstsq(G[fit], (self._y - h)[fit], rcond=None)[0]
+        return [{f"g{i + 1}": float(np.clip(x, -0.3, 0.3)) for i, x in enumerate(g)}, zero]
+
+    def filter(self, columns, values, ctx):
+        g = np.array([values[f"g{i}"] for i in range(1, SLOW_GAIN_SEGMENTS + 1)])
+        return columns * (1.0 + _time_hats(ctx, SLOW_GAIN_SEGMENTS) @ g)[:, None]
+
+    def describe(self, values):
+        return {"part": self.description,
+                "gain_changes": [float(f"{values[f'g{i}']:.4g}") for i in range(1, SLOW_GAIN_SEGMENTS + 1)]}
 
 
 # ----------------------------------------------------------------------------
@@ -429,9 +500,7 @@ class SlowDrift(Part):
 
     def columns(self, values, ctx):
         k = SLOW_DRIFT_SEGMENTS
-        T = ctx.fit_end if ctx.fit_end else ctx.duration
-        s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
-        D = np.clip(1.0 - np.abs(s[:, None] - np.arange(1, k + 1)[None, :]), 0.0, None)
+        D = _time_hats(ctx, k)
         names = [f"slow_drift_{i}" for i in range(1, k + 1)]
         return D, np.full(k, -np.inf), np.full(k, np.inf), names
 

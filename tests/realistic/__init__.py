@@ -13,7 +13,9 @@ for that round's final measurement (docs/diagnose.md); it is part of :data:`ALL`
 the third round's (docs/diagnose.md); it is part of :data:`ALL` since.
 :data:`HOLDOUT4` (``cases_holdout4.py``) was written after that and run once for the fourth
 round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
-:data:`HOLDOUT5` (``cases_holdout5.py``) is a fresh set written after that, never run through
+:data:`HOLDOUT5` (``cases_holdout5.py``) was written after that and run once for the fifth
+round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
+:data:`HOLDOUT6` (``cases_holdout6.py``) is a fresh set written after that, never run through
 the diagnosis and left out of :data:`ALL`: for the next round's final measurement.
 """
 
@@ -24,5 +26,6 @@ from .cases_holdout2 import HOLDOUT2  # noqa: F401
 from .cases_holdout3 import HOLDOUT3  # noqa: F401
 from .cases_holdout4 import HOLDOUT4  # noqa: F401
 from .cases_holdout5 import HOLDOUT5  # noqa: F401
+from .cases_holdout6 import HOLDOUT6  # noqa: F401
 
-ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4}
+ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5}
