@@ -561,9 +561,12 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         trials = step_trials[j]
         gain = steps[j]["rms_before"] ** 2 - trials[kind] ** 2
         margin = max(TIE * gain, MIN_GAIN * s2)
+        # another effect's part only when it passed every acceptance rule at the
+        # step, its signature included (an effect is named only on its evidence)
+        passed = steps[j]["evidence"].get("acceptable", {})
         alts = sorted((r, k) for k, r in trials.items()
                       if k != kind and r ** 2 - trials[kind] ** 2 <= margin
-                      and (PARTS[k].effect == chosen[j] or PARTS[k].effect not in chosen))
+                      and (PARTS[k].effect == chosen[j] or (PARTS[k].effect not in chosen and k in passed)))
         near = {k for _, k in alts}
         if j < len(chosen_kinds) - 1:
             # the same effect's other forms, with the later effects in the model: a
