@@ -216,11 +216,6 @@ class Saturation(Part):
         options["br"] = values["b"] * (1.0 - skew)
 
 
-PRELOAD_REACH = 1.0
-"""How far beyond the record's input range a preload may have gone (in
-input spans): an amplifier left at a level outside the record's stroke."""
-
-
 @register
 class InitialState(Part):
     """Unknown memory at the record's start: the plays start from the
@@ -245,21 +240,17 @@ class InitialState(Part):
     def parameters(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())
         w = hi - lo
-        return [Parameter("u1", hi, lo - PRELOAD_REACH * w, hi + PRELOAD_REACH * w, False),
-                Parameter("u2", lo, lo - PRELOAD_REACH * w, hi + PRELOAD_REACH * w, False)]
+        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False),
+                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False)]
 
     def initial_values(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())
         x0 = float(ctx.x[0])
-        w = hi - lo
         out = []
-        # preloads to either end of the record's range, and half a span and a
-        # span beyond it (the search is local: a preload far outside the
-        # stroke is not reached from the range's ends)
-        for reach in (0.0, 0.5 * PRELOAD_REACH, PRELOAD_REACH):
-            for u1, other in ((lo - reach * w, hi), (hi + reach * w, lo)):
-                for f in (0.0, 0.5, 1.0):
-                    out.append({"u1": u1, "u2": x0 + f * (other - x0)})
+        for u1 in (lo, hi):
+            for f in (0.0, 0.5, 1.0):
+                u2 = x0 + f * ((hi if u1 == lo else lo) - x0)
+                out.append({"u1": u1, "u2": u2})
         return out
 
     def core_options(self, values, ctx, options):
