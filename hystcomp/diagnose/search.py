@@ -8,7 +8,7 @@ import numpy as np
 from ..identify.parts import PARTS, Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import PartsModel, Structure, VariableProjection
-from .record import Record, noise_floor
+from .record import BEYOND, Record, noise_floor
 from .signatures import evidence as _evidence
 
 #: the canonical effect names, in the order the candidates are tried
@@ -347,6 +347,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     for eff, alts in ambiguous.items():
         say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
     verdict = "explained" if not remaining else "unexplained"
+    beyond = rec.beyond_fitted_range
+    if beyond > BEYOND:
+        say(f"caution: the held-out part drives the input {100 * beyond:.0f} % of its span beyond the fitted "
+            "part's range (its residual there is partly the loop's extrapolation)")
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
@@ -354,6 +358,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
                             else (rec.k_val, rec.n - 1)),
+                held_out_beyond_fitted_range=beyond,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
