@@ -53,6 +53,25 @@ def _partial(e, N, F):
     return math.sqrt(max(_rss(e, N) - _rss(e, np.column_stack([N, F])), 0.0) / n)
 
 
+def _level_split(e, N, F, by_level):
+    """Partial RMS of the trend columns F beyond N (common to every input
+    level), and of the level-dependent columns `by_level` beyond N and F."""
+    NF = np.column_stack([N, F])
+    return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
+
+
+def _level_verdict(common, by_level, sigma, what, how, effect):
+    """The keywords of a trend signature's :func:`evidence` entry: present
+    only when the level-dependent part is at most LEVEL_TREND times the
+    common one, and a reading that says why when it is not."""
+    ok = by_level <= LEVEL_TREND * common
+    reading = "" if ok or common <= PARTIAL * sigma else (
+        f"absent: {what} ({common / sigma:.2f} noise floors) is mostly one that changes with the input "
+        f"level{how} ({by_level / sigma:.2f}): a misfit of the loop under an excitation that changes in "
+        f"time, not {effect}")
+    return {"also": ok, "level_dependent_trend": round(by_level / sigma, 4), "reading": reading}
+
+
 def _static_nuisance(rec, bins=12):
     """Piecewise-linear functions of the input (hat functions on `bins`
     knots), separately on rising and falling branches, and a constant."""
@@ -178,30 +197,19 @@ def evidence(rec, e, pred, sigma, only=None):
             # mostly one that changes with the input (t and t^2 times v, v^2, the
             # branch and branch x v), as a misfit of the loop does under an
             # excitation whose amplitude changes in time
-            common = _partial(e, N, T)
-            by_level = _partial(e, np.column_stack([N, T]), np.column_stack(
-                [T * xc[:, None], T * (xc ** 2)[:, None], T * rec.direction[:, None],
-                 T * (rec.direction * xc)[:, None]]))
-            put("drift", sig, common / sigma, PARTIAL, also=by_level <= LEVEL_TREND * common,
-                level_dependent_trend=round(by_level / sigma, 4),
-                reading=("" if by_level <= LEVEL_TREND * common or common <= PARTIAL * sigma else
-                         f"absent: the slow trend ({common / sigma:.2f} noise floors) is mostly one that changes "
-                         f"with the input level ({by_level / sigma:.2f}): a misfit of the loop under an "
-                         "excitation that changes in time, not a drift"))
+            d = rec.direction
+            common, by_level = _level_split(e, N, T, [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
+                                                      T * (d * xc)[:, None]])
+            put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
+                common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
             # likewise a gain drift scales the whole output: beyond t times the
             # output, the trend must not be mostly one of the other input levels'
             # functions (t and t^2 times v^2, the branch and branch x v)
-            NT = np.column_stack([N, T])
-            along = _partial(e, NT, (tn * pc)[:, None])
-            by_level_g = _partial(e, np.column_stack([NT, tn * pc]), np.column_stack(
-                [T * (xc ** 2)[:, None], T * rec.direction[:, None], T * (rec.direction * xc)[:, None]]))
-            put("gain_drift", sig_g, along / sigma, PARTIAL, also=by_level_g <= LEVEL_TREND * along,
-                level_dependent_trend=round(by_level_g / sigma, 4),
-                reading=("" if by_level_g <= LEVEL_TREND * along or along <= PARTIAL * sigma else
-                         f"absent: the gain's trend ({along / sigma:.2f} noise floors) is mostly one that changes "
-                         f"with the input level in other ways ({by_level_g / sigma:.2f}): a misfit of the loop "
-                         "under an excitation that changes in time, not a gain drift"))
+            along, by_level_g = _level_split(e, np.column_stack([N, T]), (tn * pc)[:, None],
+                                             [T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
+            put("gain_drift", sig_g, along / sigma, PARTIAL, **_level_verdict(
+                along, by_level_g, sigma, "the gain's trend", " in other ways", "a gain drift"))
 
     if only is None or only in ('asymmetry', 'saturation'):
         # -- asymmetry and saturation: even and odd bends against the input
