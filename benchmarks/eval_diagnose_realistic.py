@@ -8,7 +8,7 @@ is right (named effect families equal the expected ones, and the verdict matches
 case accepts either). Any "explained" verdict whose held-out RMS exceeds 1.5x the true noise
 is flagged.
 
-HOLDOUT6 has never been run: run it once, for a tuning round's final measurement.
+HOLDOUT6 was run once for the sixth round's final measurement and is part of ALL since.
 
 Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|holdout3|holdout4|holdout5|holdout6|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]

@@ -9,6 +9,13 @@ from .._validation import as_scalar, as_signal
 from ..identify._records import _seconds
 
 
+#: share of the input span by which the held-out part may leave the fitted
+#: part's input range before the report cautions that its residual is partly
+#: extrapolation (over the realistic sets' 225 runs: 91 % named right at or
+#: below 5 %, 67 % above)
+BEYOND = 0.05
+
+
 class Record:
     """Checked (t, v, y) with the held-out split, the input's holds, rate and
     the figures of the excitation.
@@ -89,6 +96,15 @@ class Record:
             self.holds = []
             self.f_peak, self.peak_share = 0.0, 1.0
         self.direction = np.sign(self.rate)
+
+    @property
+    def beyond_fitted_range(self):
+        """How far the held-out input leaves the fitted part's input range, in
+        fractions of the input span (0 when it stays inside): there the plays
+        whose thresholds the fitted part never reached are extrapolated."""
+        vt, vh = self.v[self.train], self.v[~self.train]
+        out = max(float(vh.max() - vt.max()), 0.0) + max(float(vt.min() - vh.min()), 0.0)
+        return out / self.span
 
 
 def _hf_noise(x):

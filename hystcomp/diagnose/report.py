@@ -7,7 +7,9 @@ import textwrap
 
 import numpy as np
 
-SCHEMA_VERSION = 4
+from .record import BEYOND
+
+SCHEMA_VERSION = 5
 
 
 def _jsonable(x):
@@ -79,6 +81,12 @@ class Diagnosis:
         Why the search ended.
     remaining : dict
         What structure remains when unexplained (key -> where and how much).
+    held_out_beyond_fitted_range : float
+        How far the held-out input leaves the fitted part's input range, in
+        fractions of the input span (0: inside it).  Above 0.05 the report
+        cautions that the held-out residual is partly extrapolation: on the
+        realistic test records such runs were named right in 20 of 30 runs
+        against 178 of 195 below.
     model : PartsModel
         The final model, built from the same parts as the fit;
         ``model.simulate(v)`` reproduces :attr:`rms_heldout`.
@@ -114,7 +122,8 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 4).
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 5; 5 adds
+        ``held_out_beyond_fitted_range``).
 
         Returns
         -------
@@ -133,7 +142,8 @@ class Diagnosis:
             "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
-            "validation": list(self.validation), "steps": steps, "untested": dict(self.untested),
+            "validation": list(self.validation),
+            "held_out_beyond_fitted_range": getattr(self, "held_out_beyond_fitted_range", 0.0), "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
             "model": self.model.describe(),
@@ -178,6 +188,12 @@ class Diagnosis:
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
+        beyond = getattr(self, "held_out_beyond_fitted_range", 0.0)
+        if beyond > BEYOND:
+            lines.append(f"  caution: the held-out part drives the input {100 * beyond:.0f} % of its span beyond "
+                         "the range of the fitted part; its residual there is partly the extrapolation of plays "
+                         "the fit never moved, not only missing effects (a record whose last part stays within "
+                         "the earlier range is judged more surely)")
         tent = self.tentative
         named = [self._with_ties(e) for e in self.effects]
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"

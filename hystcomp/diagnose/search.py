@@ -8,7 +8,7 @@ import numpy as np
 from ..identify.parts import PARTS, Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import PartsModel, Structure, VariableProjection
-from .record import Record, noise_floor
+from .record import BEYOND, Record, noise_floor
 from .signatures import evidence as _evidence
 
 #: the canonical effect names, in the order the candidates are tried
@@ -347,6 +347,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     for eff, alts in ambiguous.items():
         say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
     verdict = "explained" if not remaining else "unexplained"
+    beyond = rec.beyond_fitted_range
+    if beyond > BEYOND:
+        say(f"caution: the held-out part drives the input {100 * beyond:.0f} % of its span beyond the fitted "
+            "part's range (its residual there is partly the loop's extrapolation)")
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
@@ -354,6 +358,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
                             else (rec.k_val, rec.n - 1)),
+                held_out_beyond_fitted_range=beyond,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
@@ -561,9 +566,12 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         trials = step_trials[j]
         gain = steps[j]["rms_before"] ** 2 - trials[kind] ** 2
         margin = max(TIE * gain, MIN_GAIN * s2)
+        # another effect's part only when it passed every acceptance rule at the
+        # step, its signature included (an effect is named only on its evidence)
+        passed = steps[j]["evidence"].get("acceptable", {})
         alts = sorted((r, k) for k, r in trials.items()
                       if k != kind and r ** 2 - trials[kind] ** 2 <= margin
-                      and (PARTS[k].effect == chosen[j] or PARTS[k].effect not in chosen))
+                      and (PARTS[k].effect == chosen[j] or (PARTS[k].effect not in chosen and k in passed)))
         near = {k for _, k in alts}
         if j < len(chosen_kinds) - 1:
             # the same effect's other forms, with the later effects in the model: a

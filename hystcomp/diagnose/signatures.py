@@ -19,6 +19,9 @@ import numpy as np
 PARTIAL = 0.5
 #: excess RMS at the record's start (fraction of the noise floor) for initial_state
 START = 0.5
+#: a drift's trend that changes with the input level may be at most this
+#: multiple of the trend common to every level (partial RMS of each)
+LEVEL_TREND = 1.0
 
 WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "in time (during holds)",
          "drift": "in time", "gain_drift": "in time", "asymmetry": "against input",
@@ -48,6 +51,25 @@ def _partial(e, N, F):
     """RMS of what the columns F explain of e beyond the columns N."""
     n = e.size
     return math.sqrt(max(_rss(e, N) - _rss(e, np.column_stack([N, F])), 0.0) / n)
+
+
+def _level_split(e, N, F, by_level):
+    """Partial RMS of the trend columns F beyond N (common to every input
+    level), and of the level-dependent columns `by_level` beyond N and F."""
+    NF = np.column_stack([N, F])
+    return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
+
+
+def _level_verdict(common, by_level, sigma, what, how, effect):
+    """The keywords of a trend signature's :func:`evidence` entry: present
+    only when the level-dependent part is at most LEVEL_TREND times the
+    common one, and a reading that says why when it is not."""
+    ok = by_level <= LEVEL_TREND * common
+    reading = "" if ok or common <= PARTIAL * sigma else (
+        f"absent: {what} ({common / sigma:.2f} noise floors) is mostly one that changes with the input "
+        f"level{how} ({by_level / sigma:.2f}): a misfit of the loop under an excitation that changes in "
+        f"time, not {effect}")
+    return {"also": ok, "level_dependent_trend": round(by_level / sigma, 4), "reading": reading}
 
 
 def _static_nuisance(rec, bins=12):
@@ -91,9 +113,9 @@ def evidence(rec, e, pred, sigma, only=None):
     c = 0.5 * (rec.vmin + rec.vmax)
     xc = (rec.v - c) / (0.5 * rec.span)
 
-    def put(name, signature, stat, thr, testable=True, reading="", **extra):
+    def put(name, signature, stat, thr, testable=True, reading="", also=True, **extra):
         stat = float(stat)
-        present = bool(testable and stat > thr)
+        present = bool(testable and stat > thr and also)
         ev[name] = {"signature": signature, "statistic": round(stat, 4), "threshold": thr,
                     "present": present, "testable": bool(testable), "where": WHERE[name],
                     "reading": reading or (("present: " if present else "absent: ") + signature), **extra}
@@ -162,17 +184,32 @@ def evidence(rec, e, pred, sigma, only=None):
 
     if only is None or only in ('drift', 'gain_drift'):
         # -- drift / gain drift: slow trend in time beyond static functions of the input
-        sig = "residual's slow trend in time (t, t^2) beyond static functions of the input"
-        sig_g = "residual along t times the model output (a gain changing in time)"
+        sig = ("residual's slow trend in time (t, t^2) beyond static functions of the input, common to every "
+               "input level")
+        sig_g = "residual along t times the model output (a gain changing in time), not mostly a trend of other input functions"
         if not timed:
             put("drift", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
             put("gain_drift", sig_g, 0.0, PARTIAL, False, "untested: the record has no time axis")
         else:
             tn = np.arange(n) / (n - 1) - 0.5
             T = np.column_stack([tn, tn ** 2 - 1.0 / 12.0])
-            put("drift", sig, _partial(e, N, T) / sigma, PARTIAL)
+            # a drift is the same at every input level: the trend must not be
+            # mostly one that changes with the input (t and t^2 times v, v^2, the
+            # branch and branch x v), as a misfit of the loop does under an
+            # excitation whose amplitude changes in time
+            d = rec.direction
+            common, by_level = _level_split(e, N, T, [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
+                                                      T * (d * xc)[:, None]])
+            put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
+                common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
-            put("gain_drift", sig_g, _partial(e, np.column_stack([N, T]), (tn * pc)[:, None]) / sigma, PARTIAL)
+            # likewise a gain drift scales the whole output: beyond t times the
+            # output, the trend must not be mostly one of the other input levels'
+            # functions (t and t^2 times v^2, the branch and branch x v)
+            along, by_level_g = _level_split(e, np.column_stack([N, T]), (tn * pc)[:, None],
+                                             [T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
+            put("gain_drift", sig_g, along / sigma, PARTIAL, **_level_verdict(
+                along, by_level_g, sigma, "the gain's trend", " in other ways", "a gain drift"))
 
     if only is None or only in ('asymmetry', 'saturation'):
         # -- asymmetry and saturation: even and odd bends against the input

@@ -89,3 +89,24 @@ def fractional_delay(x, d, out):
                 out[k] = (1.0 - f) * x[j] + f * x[j + 1]
             else:
                 out[k] = x[n - 1]
+
+
+@njit(cache=True)
+def column_ranges(a, k):
+    """``max - min`` of each of the first `k` columns of `a` (rows in C
+    order: one pass, where NumPy's two reductions along the rows of a
+    column slice each make a pass of their own)."""
+    n = a.shape[0]
+    hi = np.empty(k)
+    lo = np.empty(k)
+    for j in range(k):
+        hi[j] = -np.inf
+        lo[j] = np.inf
+    for i in range(n):
+        for j in range(k):
+            v = a[i, j]
+            if v > hi[j]:
+                hi[j] = v
+            if v < lo[j]:
+                lo[j] = v
+    return hi - lo

@@ -13,11 +13,14 @@ same parts, so its :meth:`~PartsModel.simulate` reproduces the fit's
 prediction exactly.
 """
 
+import hashlib
 import math
+from collections import OrderedDict
 
 import numpy as np
 from scipy.optimize import minimize
 
+from ._part_kernels import column_ranges
 from .parts import Offset, PICore
 from .solver import _split_gram, solve_weights
 
@@ -97,7 +100,7 @@ class Structure:
             if p.slot == "core" and p.kind != "core":
                 p.core_options(values.get(p.kind, {}), ctx, options)
         core = self.parts[[p.kind for p in self.parts].index("core")]
-        C = core.core(x, options, ctx)
+        C = _core_columns(core, x, options, ctx)
         for p in self.parts:
             if p.slot == "filter":
                 C = p.filter(C, values.get(p.kind, {}), ctx)
@@ -127,6 +130,38 @@ class Structure:
             if p.slot == "output":
                 return p
         return None
+
+
+CORE_CACHE = 6
+"""Play columns kept per record (:func:`_core_columns`): each is
+``n x n_thresholds`` floats (6.4 MB for 40,000 samples and 20 plays)."""
+
+
+def _core_columns(core, x, options, ctx):
+    """The core's play columns for the input `x` and the core options,
+    memoised on the record's context.
+
+    Most candidates of a diagnosis act after the core (filters, additive
+    columns, the output map): the plays they need are those of the current
+    structure, the same for every value of their own parameters.  The last
+    :data:`CORE_CACHE` blocks are kept, keyed by the input's bytes, the
+    thresholds, the sampling step and the options.  The block returned is
+    read-only (the parts' filters make new arrays).
+    """
+    cache = ctx.__dict__.setdefault("_core_cache", OrderedDict())
+    xk = "x" if x is ctx.x else hashlib.blake2b(np.ascontiguousarray(x).tobytes(), digest_size=16).digest()
+    ok = tuple(sorted((k, np.asarray(v, dtype=np.float64).tobytes()) for k, v in options.items()))
+    key = (xk, x.size, ctx.thresholds.tobytes(), ctx.dt, type(core).__name__, ok)
+    C = cache.get(key)
+    if C is not None:
+        cache.move_to_end(key)
+        return C
+    C = core.core(x, options, ctx)
+    C.setflags(write=False)
+    cache[key] = C
+    while len(cache) > CORE_CACHE:
+        cache.popitem(last=False)
+    return C
 
 
 class FitPoint:
@@ -223,8 +258,7 @@ class VariableProjection:
         still = np.zeros(A.shape[1], bool)
         Ar = _rows(A, rows)
         if k_core > 1 and Ar.shape[0]:
-            Ac = Ar[:, :k_core]
-            moves = Ac.max(axis=0) - Ac.min(axis=0)
+            moves = column_ranges(Ar, k_core)
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
         theta = self._solve(Ar, _rows(target, rows), sw, still, lower, upper)

@@ -1,0 +1,66 @@
+"""A drift (and a gain drift) is named on its signature only when the
+residual's trend is common to every input level (``signatures.LEVEL_TREND``).
+
+The residuals here are written by hand, not fitted: a loop misfit that
+grows at the stroke's ends while the excitation's amplitude decays (a trend
+that depends on the level) against an additive trend and a gain that
+changes in time (the same at every level), on one record.
+"""
+
+import numpy as np
+import pytest
+
+from hystcomp.diagnose.record import Record
+from hystcomp.diagnose.signatures import LEVEL_TREND, PARTIAL, evidence
+
+SIGMA = 0.01
+
+
+def _record():
+    dt, n = 1e-3, 20_000
+    t = np.arange(n) * dt
+    amp = 1.0 - 0.6 * t / t[-1]                       # decaying excitation (as decaying sines do)
+    v = 40.0 * amp * np.sin(2 * np.pi * 0.7 * t) + 5.0 * np.sin(2 * np.pi * 2.3 * t)
+    y = 0.02 * v                                       # the model's prediction (any smooth output)
+    return Record(t, v, y, 0.3), t / t[-1], amp, y
+
+
+def _noise(n, seed=0):
+    return SIGMA * np.random.default_rng(seed).standard_normal(n)
+
+
+def test_trend_that_changes_with_the_input_level_is_not_a_drift():
+    rec, s, amp, pred = _record()
+    xc = (rec.v - 0.5 * (rec.vmin + rec.vmax)) / (0.5 * rec.span)
+    # a misfit at the stroke's ends (an even function of the input: v^2, larger on
+    # the rising branch), scaled by the decaying amplitude: it falls in time
+    misfit = 0.4 * amp * (xc ** 2 + 0.5 * rec.direction * xc)
+    ev = evidence(rec, misfit + _noise(rec.n), pred, SIGMA, only="drift")["drift"]
+    # it has a slow trend (the plain test would name it) ...
+    assert ev["statistic"] > PARTIAL
+    # ... but most of it changes with the level: not a drift
+    assert ev["level_dependent_trend"] > LEVEL_TREND * ev["statistic"]
+    assert not ev["present"] and "input level" in ev["reading"]
+
+
+@pytest.mark.parametrize("seed", [0, 1])
+def test_additive_trend_is_a_drift(seed):
+    rec, s, amp, pred = _record()
+    warming = 0.1 * (1.0 - np.exp(-s / 0.3))          # the same offset at every level
+    ev = evidence(rec, warming + _noise(rec.n, seed), pred, SIGMA, only="drift")["drift"]
+    assert ev["statistic"] > 2 * PARTIAL and ev["present"]
+    # the level-dependent part is noise only (well under the common trend)
+    assert ev["level_dependent_trend"] < 0.3 * ev["statistic"]
+
+
+def test_gain_changing_in_time_is_a_gain_drift_and_a_level_trend_is_not():
+    rec, s, amp, pred = _record()
+    xc = (rec.v - 0.5 * (rec.vmin + rec.vmax)) / (0.5 * rec.span)
+    gain = evidence(rec, 0.1 * s * pred / np.std(pred) + _noise(rec.n), pred, SIGMA,
+                    only="gain_drift")["gain_drift"]
+    assert gain["present"] and gain["level_dependent_trend"] < 0.3 * gain["statistic"]
+    # a misfit along t x (output) plus a larger one along t x v^2 and t x branch
+    lvl = 0.05 * s * xc + 0.1 * s * (xc ** 2 + rec.direction)
+    ev = evidence(rec, lvl + _noise(rec.n), pred, SIGMA, only="gain_drift")["gain_drift"]
+    assert ev["statistic"] > PARTIAL and not ev["present"]
+    assert "input level" in ev["reading"]

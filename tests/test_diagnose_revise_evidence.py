@@ -1,0 +1,79 @@
+"""The revision (``diagnose.search._revise``) puts another effect's part in
+place of a chosen one only when that part passed every acceptance rule at
+the chosen part's step, its signature included: an effect is named on its
+evidence, never by a swap.  And the report measures (and cautions about) a
+held-out part that leaves the fitted part's input range.
+
+The record is a play core under sines with a warming offset, from the
+realistic mechanisms of ``tests/realistic`` (not hystcomp's model parts).
+"""
+
+import numpy as np
+import pytest
+
+from hystcomp.diagnose import search
+from hystcomp.diagnose.record import Record
+from hystcomp.identify.parts import PARTS
+from hystcomp.identify.search import Structure, VariableProjection
+from realistic import mechanisms as me
+
+
+def _setup():
+    rng = np.random.default_rng([5, 777])
+    dt, n = 2e-3, 4000
+    t = np.arange(n) * dt
+    v = 40.0 * np.sin(2 * np.pi * 0.5 * t) + 10.0 * np.sin(2 * np.pi * 1.7 * t)
+    y = me.play_core(v, 100.0) + me.thermal_offset(t, 1.0, 3.0) + 0.05 * rng.standard_normal(n)
+    rec = Record(t, v, y, 0.3)
+    ctx = search.base_context(rec)
+    vp = VariableProjection(ctx, rec.y, rec.train)
+    parts = [PARTS["offset_drift"](), PARTS["output_lag"]()]
+    for p in parts:
+        p.prepare(rec.y, ctx)
+    st = Structure().extended(parts[0]).extended(parts[1])
+    start = {}
+    for p, q in st.parameters(ctx):
+        start.setdefault(p.kind, {})[q.name] = q.initial
+    cur = vp.evaluate(st, start)
+    return rec, ctx, vp, st, cur
+
+
+@pytest.mark.parametrize("passed", [False, True])
+def test_another_effect_is_swapped_in_only_when_it_passed_at_its_step(passed):
+    rec, ctx, vp, st, cur = _setup()
+    r = float(np.sqrt(np.mean((rec.y - cur.prediction)[~rec.train] ** 2)))
+    # step 1 chose the drift; the gain drift fitted exactly as well there (a near tie)
+    acceptable = {"offset_drift": 5.0, **({"gain_drift": 5.0} if passed else {})}
+    steps = [{"effect": "drift", "rms_before": 2 * r, "evidence": {"acceptable": acceptable}},
+             {"effect": "rate_dependence", "rms_before": 1.5 * r, "evidence": {"acceptable": {"output_lag": 1.0}}}]
+    trials = [{"offset_drift": r, "gain_drift": r}, {"output_lag": r}]
+    said = []
+
+    def rms_val(pt):
+        return float(np.sqrt(np.mean((rec.y - pt.prediction)[~rec.train] ** 2)))
+
+    search._revise(vp, ctx, rec, st, cur, steps, ["drift", "rate_dependence"], ["offset_drift", "output_lag"],
+                   trials, 0.05, rms_val, said.append)
+    tried = [s for s in said if s.startswith("revise: offset_drift -> gain_drift")]
+    assert bool(tried) == passed, said
+
+
+def test_held_out_beyond_the_fitted_range_is_measured_and_reported():
+    # a staircase whose last levels go past the earlier ones (the caution's case)
+    # and the same levels reordered so that the largest come first
+    from hystcomp.diagnose import diagnose
+    from realistic import excitations as ex
+
+    rng = np.random.default_rng([6, 778])
+    late = np.array([0.0, 10.0, -10.0, 15.0, -12.0, 12.0, -15.0, 40.0, -40.0, 35.0])
+    for levels, expect in ((late, True), (np.concatenate([[0.0], late[[7, 8, 9, 1, 2, 3, 4, 5, 6]]]), False)):
+        v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
+        t = np.arange(v.size) * 2e-3
+        y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
+        rep = diagnose(t, v, y, effects=["drift"], progress=False)
+        k = int(round(0.7 * v.size))
+        outside = (max(v[k:].max() - v[:k].max(), 0) + max(v[:k].min() - v[k:].min(), 0)) / np.ptp(v)
+        assert rep.held_out_beyond_fitted_range == pytest.approx(outside, abs=1e-12)
+        assert rep.to_dict()["held_out_beyond_fitted_range"] == pytest.approx(outside, abs=1e-12)
+        assert (outside > 0.05) == expect
+        assert ("caution: the held-out part drives the input" in rep.report()) == expect

@@ -1,0 +1,61 @@
+"""The engine's memo of play columns (:func:`hystcomp.identify.search._core_columns`):
+a design from the memo equals one computed afresh, inputs that the input
+parts change and core options that differ are told apart, and the memo is
+bounded and read-only."""
+
+import numpy as np
+import pytest
+
+from hystcomp.identify import search
+from hystcomp.identify.parts import Context, Delay, PICore, Saturation, SlowDrift
+from hystcomp.identify.search import Structure
+
+
+def _ctx():
+    t = np.arange(3000) * 1e-3
+    v = 2.0 * np.sin(2 * np.pi * 1.3 * t) * (1 + 0.3 * np.sin(2 * np.pi * 0.2 * t))
+    return Context(v, 1e-3, 0.0, 2.6, 3.0, n_thresholds=10)
+
+
+def _fresh(structure, values, ctx):
+    """The design with the memo emptied first (every block computed)."""
+    ctx.__dict__.pop("_core_cache", None)
+    return structure.design(values, ctx)[0]
+
+
+@pytest.mark.parametrize("part, values", [
+    (SlowDrift(), [{}, {}]),
+    (Delay(), [{"delay": {"delay": 0.0}}, {"delay": {"delay": 3.5}}, {"delay": {"delay": 0.0}}]),
+    (Saturation(), [{"saturation_envelope": {"b": 0.5}}, {"saturation_envelope": {"b": 1.5}},
+                    {"saturation_envelope": {"b": 0.5}}]),
+])
+def test_memo_gives_the_design_computed_afresh(part, values):
+    ctx = _ctx()
+    s = Structure().extended(part)
+    if values[0] == {}:
+        values = [{part.kind: {q.name: q.start for q in part.parameters(ctx, set(s.kinds))}}] * 2
+    memo = [s.design(v, ctx)[0] for v in values]
+    fresh = [_fresh(s, v, ctx) for v in values]
+    for a, b in zip(memo, fresh):
+        # the same arithmetic on the same block: equal to the last bit
+        np.testing.assert_array_equal(a, b)
+    if part.kind != "slow_drift":
+        # different delays / envelopes give different plays (so the key tells them apart)
+        assert not np.allclose(memo[0], memo[1])
+
+
+def test_memo_is_bounded_and_read_only():
+    ctx = _ctx()
+    s = Structure().extended(Saturation())
+    for b in np.linspace(0.1, 2.0, search.CORE_CACHE + 4):
+        s.design({"saturation_envelope": {"b": float(b)}}, ctx)
+    assert len(ctx._core_cache) == search.CORE_CACHE
+    C = next(iter(ctx._core_cache.values()))
+    with pytest.raises(ValueError):
+        C[0, 0] = 1.0
+    # the thresholds are part of the key: changing them changes the plays
+    before = PICore().core(ctx.x, {}, ctx)
+    ctx.thresholds = ctx.thresholds * 0.5
+    after = Structure().design({}, ctx)[0][:, :ctx.thresholds.size]
+    assert not np.allclose(before, after)
+    np.testing.assert_array_equal(after, PICore().core(ctx.x, {}, ctx))
