@@ -77,3 +77,20 @@ def test_held_out_beyond_the_fitted_range_is_measured_and_reported():
         assert rep.to_dict()["held_out_beyond_fitted_range"] == pytest.approx(outside, abs=1e-12)
         assert (outside > 0.05) == expect
         assert ("caution: the held-out part drives the input" in rep.report()) == expect
+
+
+def test_gap_figure_title_carries_the_caution(tmp_path):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from hystcomp.diagnose import diagnose
+    from realistic import excitations as ex
+
+    rng = np.random.default_rng([6, 779])
+    levels = np.array([0.0, 10.0, -10.0, 15.0, -12.0, 12.0, -15.0, 40.0, -40.0, 35.0])
+    v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
+    y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
+    rep = diagnose(np.arange(v.size) * 2e-3, v, y, effects=["drift"], progress=False)
+    figs = rep.plots()
+    title = figs["gap"]._suptitle.get_text().replace("\n", " ")
+    assert "Caution: the held-out part drives the input" in title, title

@@ -321,7 +321,12 @@ class Diagnosis:
             a.set_ylabel(f"residual [{ou}]")
             a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
         ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed: held out from)")
-        fig.suptitle(textwrap.fill(f"verdict: {self.verdict}; stopped: {self.stopped}", 110), fontsize=9)
+        title = f"verdict: {self.verdict}; stopped: {self.stopped}"
+        beyond = getattr(self, "held_out_beyond_fitted_range", 0.0)
+        if beyond > BEYOND:
+            title += (f". Caution: the held-out part drives the input {100 * beyond:.0f} % of its span beyond "
+                      "the fitted part's range (partly extrapolation)")
+        fig.suptitle(textwrap.fill(title, 110), fontsize=9)
         out["gap"] = fig
         return out
 
