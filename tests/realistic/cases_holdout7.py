@@ -1,6 +1,6 @@
-"""The HOLDOUT7 set: written after HOLDOUT6 was measured (2026-11-25, seventh round), never run
-through the diagnosis. Use it once, for the final measurement of the next tuning round, and
-write a new one after.
+"""The HOLDOUT7 set: written after HOLDOUT6 was measured (2026-11-25, seventh round), run once
+through the diagnosis for the seventh round's final measurement (docs/diagnose.md), part of
+ALL since.
 
 Mechanisms and signals that the other sets do not have, or not in these combinations: a clean
 core under trapezoids (ramps and flat holds) from rest, sampled at 1.6 kHz; four Kelvin-Voigt
