@@ -132,7 +132,7 @@ class Record:
         frac = as_scalar(validation, "validation")
         if not 0.0 < frac < 0.9:
             raise ValueError(f"Parameter validation is {frac} but should be a fraction in (0, 0.9) "
-                             "(the last part of the record is held out)")
+                             "(that share of the record is held out)")
         if held_out not in HELD_OUT:
             raise ValueError(f"Parameter held_out is {held_out!r} but should be one of {HELD_OUT}")
         self.n = n
@@ -208,6 +208,16 @@ class Record:
         indices without a time axis)."""
         a, b = self.held_start, self.held_end - 1
         return (float(self.t[a]), float(self.t[b])) if self.t is not None else (a, b)
+
+    def held_out_line(self):
+        """The report's line on a block held out inside the record ("" when
+        the end is held out)."""
+        if not self.held_out_in_middle:
+            return ""
+        a, b = self.held_interval()
+        unit = " s" if self.t is not None else " (sample index)"
+        return (f"held out: {a:g} ... {b:g}{unit} inside the record, not its end (the end drives the input "
+                f"{100 * self.held_moved_from_end:.0f} % of its span beyond the rest's range)")
 
 
 def _hf_noise(x):

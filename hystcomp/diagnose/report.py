@@ -210,9 +210,7 @@ class Diagnosis:
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
         if self.held_out_moved > 0:
-            a, b = self.validation
-            lines.append(f"  held out: {a:g} ... {b:g} inside the record, not its end (the end drives the input "
-                         f"{100 * self.held_out_moved:.0f} % of its span beyond the rest's range)")
+            lines.append("  " + self._rec.held_out_line())
         if self.held_out_beyond_fitted_range > BEYOND:
             lines.append("  caution: " + caution(self.held_out_beyond_fitted_range))
         tent = self.tentative

@@ -101,9 +101,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     ctx.noise = sigma
     rms0 = rms_val(cur)
     if rec.held_out_in_middle:
-        a, b = rec.held_interval()
-        say(f"held out: {a:g} ... {b:g} inside the record (the end drives the input "
-            f"{100 * rec.held_moved_from_end:.0f} % of its span beyond the rest's range)")
+        say(rec.held_out_line())
     say(f"base PI ({ctx.thresholds.size} plays) held-out RMS {rms0:.4g}, noise floor {sigma:.4g} "
         f"({noise_info['method']})  [{time.perf_counter() - t0:.1f} s]")
     first_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
