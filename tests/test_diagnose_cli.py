@@ -41,7 +41,7 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert js["schema_version"] == 5
+    assert js["schema_version"] == 6
     assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
     assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]
@@ -195,3 +195,34 @@ def test_several_files_on_two_processes(tmp_path, capsys):
     assert (tmp_path / "figs" / "drift" / "diagnose_gap.png").exists()
     status, _, err = _run([str(paths[0]), str(tmp_path / "missing.csv")], capsys)
     assert status == 2 and "missing.csv" in err and "Traceback" not in err
+
+
+def test_held_out_option(tmp_path, capsys):
+    # a staircase whose largest levels come last: by default (auto) a block inside the
+    # record is held out, with --held-out last the end; both in the JSON and the report
+    from realistic import excitations as ex
+    from realistic import mechanisms as me
+
+    rng = np.random.default_rng([6, 781])
+    levels = np.array([0.0, 10.0, -10.0, 15.0, -12.0, 12.0, -15.0, 40.0, -40.0, 35.0])
+    v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
+    t = np.arange(v.size) * 2e-3
+    y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
+    path = _write(tmp_path / "late.csv", ["t", "v", "y"], zip(t, v, y))
+    out = {}
+    for mode in ("auto", "last"):
+        status, o, err = _run([path, "--json", "--quiet", "--held-out", mode], capsys)
+        assert status == 0, err
+        out[mode] = json.loads(o)
+    assert out["auto"]["held_out_moved"] > 0.05 and out["auto"]["validation"][1] < t[-1] - 1.0
+    assert out["auto"]["held_out_beyond_fitted_range"] <= 0.05
+    assert out["last"]["held_out_moved"] == 0.0 and out["last"]["validation"][1] == pytest.approx(t[-1])
+    assert out["last"]["held_out_beyond_fitted_range"] > 0.05
+    status, o, err = _run([path, "--quiet"], capsys)
+    assert status == 0 and "inside the record" in o
+    with pytest.raises(SystemExit) as exc:           # argparse: a choice, exit 2
+        _run([path, "--held-out", "middle"], capsys)
+    assert exc.value.code == 2 and "--held-out" in capsys.readouterr().err
+    # the Python API names the argument and the value
+    with pytest.raises(ValueError, match="held_out.*'middle'"):
+        dg.diagnose(t, v, y, held_out="middle", progress=False)

@@ -41,7 +41,7 @@ def test_creep_under_a_drift_is_found_with_it():
     # the two steps are the lead alone, then the pair: the second step ends at the pair's RMS
     assert paired[1]["rms_before"] == pytest.approx(paired[0]["rms_after"])
     # the returned model reproduces the reported held-out RMS
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
     # within 2.5 noise floors: the thermal law and the two Kelvin-Voigt elements are
@@ -63,7 +63,7 @@ def test_a_shapeless_drift_chosen_first_gives_way_to_the_trend_once_creep_is_in(
     assert len(swaps) == 1 and "same effect" in swaps[0]["reason"], rep.revisions
     assert swaps[0]["rms_after"] < swaps[0]["rms_before"]
     assert rep.rms_heldout < 1.5 * rep.noise_floor, rep.report()
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
 
@@ -79,7 +79,7 @@ def test_flag_core_extensions_are_tentative_not_named():
     assert rep.effects == [], rep.report()
     assert "out_of_vocabulary" in rep.remaining, rep.remaining
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 5
+    assert js["schema_version"] == 6
     assert js["effects"] == [] and js["tentative_effects"] == rep.tentative
     assert 0.0 <= js["misfit_share_explained"] < 0.9
     if rep.tentative:

@@ -70,7 +70,7 @@ def test_held_out_beyond_the_fitted_range_is_measured_and_reported():
         v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
         t = np.arange(v.size) * 2e-3
         y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
-        rep = diagnose(t, v, y, effects=["drift"], progress=False)
+        rep = diagnose(t, v, y, effects=["drift"], progress=False, held_out="last")
         k = int(round(0.7 * v.size))
         outside = (max(v[k:].max() - v[:k].max(), 0) + max(v[:k].min() - v[k:].min(), 0)) / np.ptp(v)
         assert rep.held_out_beyond_fitted_range == pytest.approx(outside, abs=1e-12)
@@ -90,7 +90,48 @@ def test_gap_figure_title_carries_the_caution(tmp_path):
     levels = np.array([0.0, 10.0, -10.0, 15.0, -12.0, 12.0, -15.0, 40.0, -40.0, 35.0])
     v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
     y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
-    rep = diagnose(np.arange(v.size) * 2e-3, v, y, effects=["drift"], progress=False)
+    rep = diagnose(np.arange(v.size) * 2e-3, v, y, effects=["drift"], progress=False, held_out="last")
     figs = rep.plots()
     title = figs["gap"]._suptitle.get_text().replace("\n", " ")
     assert "Caution: the held-out part drives the input" in title, title
+
+
+def test_auto_holds_out_a_block_inside_the_fitted_range():
+    # the late staircase again: by default the end (which goes to +-40 after
+    # levels within +-15) is not held out but a block inside the record whose
+    # input stays within the rest's range, and the figures mark both its ends
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from hystcomp.diagnose import diagnose
+    from realistic import excitations as ex
+
+    rng = np.random.default_rng([6, 780])
+    levels = np.array([0.0, 10.0, -10.0, 15.0, -12.0, 12.0, -15.0, 40.0, -40.0, 35.0])
+    v = ex.staircase_holds(2e-3, levels, 0.8, 0.05)
+    t = np.arange(v.size) * 2e-3
+    y = me.play_core(v, 100.0) + 0.05 * rng.standard_normal(v.size)
+    rep = diagnose(t, v, y, effects=["drift"], progress=False)
+    rec = rep._rec
+    k = int(round(0.7 * v.size))
+    end = (max(v[k:].max() - v[:k].max(), 0) + max(v[:k].min() - v[k:].min(), 0)) / np.ptp(v)
+    assert end > 0.05
+    assert rep.held_out_moved == pytest.approx(end, abs=1e-12)
+    assert rep.to_dict()["held_out_moved"] == pytest.approx(end, abs=1e-12)
+    # the block: as long as the end, inside the record, after 30 % of it, within the rest's range
+    a, b = rec.held_start, rec.held_end
+    assert b - a == v.size - k and int(round(0.3 * v.size)) <= a and b < v.size
+    assert rep.held_out_beyond_fitted_range <= 0.05
+    assert rec.train[:a].all() and not rec.train[a:b].any() and rec.train[b:].all()
+    assert rep.validation == (pytest.approx(t[a]), pytest.approx(t[b - 1]))
+    assert "inside the record" in rep.report() and "caution" not in rep.report()
+    # the model reproduces the reported held-out RMS on that block (1e-9 relative)
+    e = rep.model.simulate(v)[a:b] - y[a:b]
+    assert float(np.sqrt(np.mean(e ** 2))) == pytest.approx(rep.rms_heldout, rel=1e-9)
+    # the clean record is explained from the other block as well
+    assert rep.verdict == "explained" and rep.effects == []
+    lines = [ln for ln in rep.plots()["gap"].axes[0].lines if ln.get_linestyle() == "--"]
+    assert sorted(float(ln.get_xdata()[0]) for ln in lines) == pytest.approx([t[a], t[b - 1]])
+    # "last" keeps the end
+    last = diagnose(t, v, y, effects=["drift"], progress=False, held_out="last")
+    assert last.held_out_moved == 0.0 and last._rec.held_end == v.size

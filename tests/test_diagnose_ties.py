@@ -74,7 +74,7 @@ def test_unipolar_record_gets_its_plays_where_its_loops_are():
     assert np.sum(r < 0.5 * span) == 16
     assert rep.effects == [] and rep.verdict == "explained", rep.report()
     # the returned model is simulated with the thresholds it was fitted with
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
 
@@ -89,7 +89,7 @@ def test_thresholds_given_are_the_models_thresholds():
     rep = diagnose(t, v, y, effects=["drift"], base=base, progress=False)
     scale = rep._rec.scale
     np.testing.assert_allclose(rep.model._ctx.thresholds * scale, [0.0, 5.0, 10.0, 20.0, 40.0], rtol=1e-12)
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
 

@@ -16,7 +16,7 @@ from realistic import mechanisms as me
 
 
 def _rms_held(rep, y, v):
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     return float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
 
 

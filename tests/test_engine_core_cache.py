@@ -19,7 +19,7 @@ def _ctx():
 
 def _fresh(structure, values, ctx):
     """The design with the memo emptied first (every block computed)."""
-    ctx.__dict__.pop("_core_cache", None)
+    ctx.core_cache.clear()
     return structure.design(values, ctx)[0]
 
 
@@ -49,8 +49,8 @@ def test_memo_is_bounded_and_read_only():
     s = Structure().extended(Saturation())
     for b in np.linspace(0.1, 2.0, search.CORE_CACHE + 4):
         s.design({"saturation_envelope": {"b": float(b)}}, ctx)
-    assert len(ctx._core_cache) == search.CORE_CACHE
-    C = next(iter(ctx._core_cache.values()))
+    assert len(ctx.core_cache) == search.CORE_CACHE
+    C = next(iter(ctx.core_cache.values()))
     with pytest.raises(ValueError):
         C[0, 0] = 1.0
     # the thresholds are part of the key: changing them changes the plays

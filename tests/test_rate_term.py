@@ -42,7 +42,7 @@ def test_eddy_current_record_is_named_rate_dependence():
     assert [d["kind"] for d in rep.model.describe()].count("rate_term") == 1
     # within 1.5 noise floors (the play density is not the core's 20 plays exactly)
     assert rep.verdict == "explained" and rep.rms_heldout < 1.5 * rep.noise_floor
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
     # the inverse says it does not take the part, naming it

@@ -3,8 +3,9 @@
 import numpy as np
 import pytest
 
-from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOLDOUT6, TUNING, family
+from realistic import ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOLDOUT6, HOLDOUT7, TUNING, family
 from realistic import excitations as ex
+from realistic.record import FAMILIES
 from realistic import mechanisms as me
 
 
@@ -176,6 +177,119 @@ def test_holdout6_mechanisms_follow_their_laws():
     ratio = r.y[big] / core[big]
     k = np.flatnonzero(big)
     assert ratio[k > 0.9 * len(r.v)].mean() > ratio[k < 0.1 * len(r.v)].mean() + 0.03
+
+
+def test_holdout7_was_measured_joined_all_and_is_well_formed():
+    # written after HOLDOUT6 was measured, measured once in round 7, in ALL since
+    assert set(HOLDOUT7) <= set(ALL) and len(HOLDOUT7) == 10
+    assert all(n.startswith("holdout7_") for n in HOLDOUT7)
+    verdicts = set()
+    for name, fn in HOLDOUT7.items():
+        recs = [fn(s) for s in range(3)]
+        for r in recs:
+            assert r.name == name
+            assert np.isfinite(r.v).all() and np.isfinite(r.y).all()
+            assert len(r.v) == len(r.y) == len(r.t) and 8_000 <= len(r.v) <= 40_000
+            dt = np.diff(r.t)
+            assert dt[0] > 0 and np.allclose(dt, dt[0], rtol=1e-9, atol=0)
+            assert 200.0 <= 1 / dt[0] <= 2_000.0 + 1e-6
+            assert set(r.expect_effects) <= set(FAMILIES)
+            assert r.expect_verdict in ("explained", "unexplained", "either")
+            assert r.noise_std > 0
+        verdicts.add(recs[0].expect_verdict)
+        # seeds differ in more than the noise: the magnitudes are drawn from the seed
+        assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
+        assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
+    assert verdicts == {"explained", "unexplained", "either"}
+    assert {e for n in HOLDOUT7 for e in HOLDOUT7[n](0).expect_effects} == {
+        "creep", "rate_dependence", "drift", "output_saturation", "asymmetry", "delay", "initial_state",
+        "gain_drift"}
+    assert any(not HOLDOUT7[n](0).expect_effects and HOLDOUT7[n](0).expect_verdict == "explained"
+               for n in HOLDOUT7)
+    assert any(len(HOLDOUT7[n](0).expect_effects) == 2 for n in HOLDOUT7)
+
+
+def _lag_samples(y, x, max_lag=8.0):
+    """The lag of y behind x in samples: the fractional shift of x that maximises the
+    (normalised) cross-correlation with y over a fixed window. Normalising by the window's
+    norm makes the maximum exact for a pure shift (Cauchy-Schwarz); a plain sum over integer
+    lags refined by a parabola is biased by 0.1 ... 0.2 samples for narrow-band signals."""
+    from scipy.optimize import minimize_scalar
+
+    w = slice(int(max_lag) + 2, len(x) - int(max_lag) - 2)
+
+    def rho(d):
+        return np.corrcoef(y[w], me.fractional_delay(x, d)[w])[0, 1]
+
+    grid = np.arange(-max_lag, max_lag + 1e-9, 0.1)
+    d0 = grid[int(np.argmax([rho(d) for d in grid]))]
+    assert abs(d0) < max_lag
+    return minimize_scalar(lambda d: -rho(d), bounds=(d0 - 0.1, d0 + 0.1), method="bounded",
+                           options={"xatol": 1e-4}).x
+
+
+def test_holdout7_mechanisms_follow_their_laws():
+    from realistic import cases_holdout7 as h7
+
+    # trapezoids: a rest at 0 V, then flat holds at +-amp for (1 - ramp_fraction) of the time
+    dt = 1e-3
+    v = h7._trapezoids(dt, 10_500, 1.0, 2.0, ramp_fraction=0.3, decay=0.0, rest_s=0.5)
+    assert np.all(v[:500] == 0) and v[501] > 0
+    assert abs(np.mean(np.abs(v[500:]) == 2.0) - 0.7) < 0.01
+    # the stepwise loop walks 0 -> top -> -top -> 0
+    lv = h7._stepwise_loop_levels(40.0, 3, np.random.default_rng(0), jitter=0.0)
+    np.testing.assert_allclose(lv[[0, 3, 9, 12]], [0.0, 40.0, -40.0, 0.0])
+    # the preload is a decaying alternation ending at 0
+    pre = h7._decaying_alternation(60.0, 0.5, 3)
+    assert pre[0] == pre[-1] == 0 and pre.max() == 60.0 and pre.min() == -30.0
+
+    for seed in (0, 1):
+        # the clipped output never exceeds its clip level (up to the sensor noise), and clips
+        r = h7.HOLDOUT7["holdout7_clip_unipolar_bursts"](seed)
+        level = r.extra["clip_level"]
+        assert r.y.max() <= level + 6 * r.noise_std
+        assert np.mean(np.abs(r.y - level) < 3 * r.noise_std) > 0.01
+        assert me.play_core(r.v, 100.0).max() > level + 10 * r.noise_std
+        assert r.v.max() > 95 and r.v.min() > -1          # unipolar 0 ... 100 V
+
+        # the delayed output lags the undelayed one by the stated fractional number of samples
+        for name in ("holdout7_delay_wideband_random_2khz", "holdout7_pair_delay_cooling_gain_am"):
+            r = h7.HOLDOUT7[name](seed)
+            lag = _lag_samples(r.y, me.play_core(r.v, 100.0))
+            assert abs(lag - r.extra["delay_samples"]) < 0.1, (name, lag, r.extra["delay_samples"])
+
+        # the preloaded core differs from the virgin one at the start and agrees with it from
+        # the first excursion between extremes 2 r_max = 90 V apart on (wiping-out)
+        r = h7.HOLDOUT7["holdout7_initial_state_alternating_preload"](seed)
+        _, z = me.play_core(r.extra["preload"], 100.0, return_state=True)
+        pre_y = me.play_core(r.v, 100.0, state=z)
+        virgin = me.play_core(r.v, 100.0)
+        assert np.sqrt(np.mean((r.y - pre_y) ** 2)) < 1.5 * r.noise_std      # the record is the preloaded core
+        assert np.max(np.abs(pre_y[:1000] - virgin[:1000])) > 20 * r.noise_std
+        k = int(np.argmax(np.maximum.accumulate(r.v) - np.minimum.accumulate(r.v) >= 90.0))
+        assert 0 < k < 0.8 * len(r.v)
+        assert np.max(np.abs(pre_y[:k] - virgin[:k])) > 20 * r.noise_std
+        np.testing.assert_allclose(pre_y[k:], virgin[k:], atol=1e-9)
+
+        # stepped-frequency sines: each segment's spectrum peaks at its stated frequency, and the
+        # viscoplastic loop encloses more area per cycle at the highest frequency than the lowest
+        r = h7.HOLDOUT7["holdout7_rate_viscoplastic_stepped_sines"](seed)
+        freqs, edges = r.extra["freqs"], r.extra["segments"]
+        assert len(freqs) == 4 and edges[-1] == len(r.v)
+        dt = r.t[1] - r.t[0]
+        areas = []
+        for f, a, b in zip(freqs, edges[:-1], edges[1:]):
+            seg = r.v[a:b]
+            spec = np.abs(np.fft.rfft(seg - seg.mean()))
+            fr = np.fft.rfftfreq(len(seg), dt)
+            assert abs(fr[np.argmax(spec)] - f) <= fr[1] + 1e-9
+            cycles = round(f * len(seg) * dt)
+            areas.append(abs(np.sum(r.y[a:b - 1] * np.diff(seg))) / cycles)
+        assert areas[-1] > 1.3 * areas[0]
+
+    # the butterfly is non-negative up to the noise and touches 0 (the polarisation reverses)
+    r = h7.HOLDOUT7["holdout7_oov_preisach_butterfly_trapezoids"](0)
+    assert r.y.min() > -6 * r.noise_std and np.mean(r.y < 0.05 * r.y.max()) > 0.005
 
 
 def test_holdout5_mechanisms_follow_their_laws():

@@ -53,7 +53,7 @@ def test_a_gain_that_rises_along_an_s_curve_and_settles_is_named_gain_drift():
     # held out (what made it the step's part)
     cand = rep.steps[0]["evidence"]["candidates"]
     assert cand["slow_gain_drift"] < cand["gain_drift"]
-    held = slice(rep._rec.k_val, None)
+    held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
 

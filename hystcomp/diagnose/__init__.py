@@ -56,7 +56,7 @@ ALL = EFFECTS
 
 
 def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20,
-             progress=True, *, time="t", input="v", output="y"):
+             progress=True, *, time="t", input="v", output="y", held_out="auto"):
     """Name the effects a PI model lacks by evidence, add them, and give an
     honest verdict.
 
@@ -77,7 +77,8 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         registered (:func:`hystcomp.identify.parts.register`); default all
         of :data:`EFFECTS`.
     validation : float
-        Fraction of the record held out at its end.
+        Fraction of the record held out (not fitted; every effect is judged
+        on it).
     max_effects : int
         At most this many effects are added.
     base : "pi" or PI
@@ -96,6 +97,14 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         record without a time axis.
     input, output : str
         With a DataFrame: the input and measured-output columns.
+    held_out : {"auto", "last"}
+        Which part is held out: ``"last"`` the record's end; ``"auto"``
+        (default) the end, unless its input leaves the rest's range by more
+        than 5 % of the span (a record whose amplitude grows to the end):
+        then a block of the same length inside the record whose input stays
+        within the rest's range (see
+        :func:`hystcomp.diagnose.record.inner_block`; the report says so and
+        :attr:`Diagnosis.validation` gives where).
 
     Returns
     -------
@@ -141,6 +150,7 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         thresholds = base.thresholds
     elif not (isinstance(base, str) and base == "pi"):
         raise ValueError(f"Parameter base is {base!r} but should be 'pi' or a PI model")
+    check_choice(held_out, "held_out", ("auto", "last"))
     n_thresholds = int(n_thresholds)
     if n_thresholds < 2:
         raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
@@ -156,11 +166,12 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
     else:
         limit = threadpool_limits(limits=1, user_api="blas")
     with limit:
-        kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress)
+        kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress,
+                        held_out)
     return Diagnosis(**kw)
 
 
-def evidence(t, v, y, model=None, validation=0.3):
+def evidence(t, v, y, model=None, validation=0.3, held_out="auto"):
     """The signature tests of every effect on a model's residual (default:
     the base PI model fitted on the training part).
 
@@ -174,7 +185,9 @@ def evidence(t, v, y, model=None, validation=0.3):
         A model whose ``simulate(v)`` predicts y (e.g. :attr:`Diagnosis.model`);
         default the base PI model.
     validation : float
-        Fraction held out at the end (not used to fit the default model).
+        Fraction held out (not used to fit the default model).
+    held_out : {"auto", "last"}
+        Which part is held out, as in :func:`diagnose`.
 
     Returns
     -------
@@ -195,7 +208,7 @@ def evidence(t, v, y, model=None, validation=0.3):
     from .search import base_context
     from .signatures import evidence as _evidence
 
-    rec = Record(t, v, y, validation)
+    rec = Record(t, v, y, validation, held_out)
     ctx = base_context(rec)
     base = VariableProjection(ctx, rec.y, rec.train).evaluate(Structure(), {}).prediction
     sigma, _ = noise_floor(rec, rec.y - base)

@@ -290,6 +290,10 @@ def add_arguments(parser):
     parser.add_argument("--units", metavar="IN,OUT", default="input units,output units",
                         help="units of the input and output columns for the figures' axes, e.g. V,um")
     parser.add_argument("--validation", type=float, default=0.3, help="held-out fraction (default 0.3)")
+    parser.add_argument("--held-out", choices=("auto", "last"), default="auto",
+                        help="which part is held out: the end (last), or auto (default): the end unless its "
+                             "input leaves the rest's range by more than 5 %% of the span, then a block inside "
+                             "the record")
     parser.add_argument("--max-effects", type=int, default=4, help="at most this many effects (default 4)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     return parser
@@ -339,7 +343,7 @@ def run(args):
             check_output_folder(args.plots, "--plots")
         except ValueError as exc:
             return _fail(f"error: {exc}")
-    options = dict(validation=args.validation, max_effects=args.max_effects)
+    options = dict(validation=args.validation, max_effects=args.max_effects, held_out=args.held_out)
     try:
         if len(files) == 1:
             reps = [_diagnose(records[0], options, not args.quiet)]
@@ -388,7 +392,7 @@ def _load(args, path):
     t, v, y = load_csv(path, None if args.no_time else args.time, args.input, args.output)
     try:
         # what is wrong with the record itself (or the options) is the user's to fix
-        Record(t, v, y, args.validation)
+        Record(t, v, y, args.validation, args.held_out)
         if args.max_effects < 0:
             raise ValueError(f"--max-effects is {args.max_effects} but should be >= 0")
     except ValueError as exc:

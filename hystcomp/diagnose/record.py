@@ -15,6 +15,78 @@ from ..identify._records import _seconds
 #: below 5 %, 67 % above)
 BEYOND = 0.05
 
+#: with ``held_out="auto"``, an inner held-out block starts at a multiple of
+#: this share of the record, not before BLOCK_FIRST of it (the fit needs the
+#: record's first part: the core's virgin loading, the initial state)
+BLOCK_STEP = 0.05
+BLOCK_FIRST = 0.3
+
+HELD_OUT = ("auto", "last")
+
+
+def caution(beyond, short=False):
+    """The caution on a held-out part that leaves the fitted part's input
+    range by `beyond` (a share of the input span), or "" at or below
+    :data:`BEYOND`; `short` for a figure's title."""
+    if beyond <= BEYOND:
+        return ""
+    s = f"the held-out part drives the input {100 * beyond:.0f} % of its span beyond the fitted part's range"
+    if short:
+        return s + " (partly extrapolation)"
+    return (s + "; its residual there is partly the extrapolation of plays the fit never moved, not only "
+            "missing effects (a record whose held-out part stays within the rest's range is judged more surely)")
+
+
+def _beyond_range(v, a, b, span):
+    """How far v[a:b] leaves the range of the rest of v, in shares of `span`."""
+    vh = v[a:b]
+    rest = np.concatenate([v[:a], v[b:]])
+    out = max(float(vh.max() - rest.max()), 0.0) + max(float(rest.min() - vh.min()), 0.0)
+    return out / span
+
+
+def inner_block(v, length, span):
+    """Start of a held-out block of `length` samples inside the record whose
+    input stays within the rest's range (to :data:`BEYOND` of the span): the
+    latest such start at a multiple of :data:`BLOCK_STEP` of the record from
+    :data:`BLOCK_FIRST` of it on; when none does, the start whose block leaves
+    the range least, or None when every block does.
+
+    Parameters
+    ----------
+    v : ndarray
+        Input samples.
+    length : int
+        Samples held out.
+    span : float
+        The input's span.
+
+    Returns
+    -------
+    int or None
+
+    Examples
+    --------
+    A sine whose amplitude grows to the end: the last 300 samples leave the
+    rest's range, the block 600 ... 899 does not (the samples after it reach
+    further):
+
+    >>> v = np.linspace(0.5, 1.0, 1000) * np.sin(np.linspace(0, 60, 1000))
+    >>> inner_block(v, 300, float(np.ptp(v)))
+    600
+    """
+    n = v.size
+    step = max(int(round(BLOCK_STEP * n)), 1)
+    starts = [a for a in range(int(round(BLOCK_FIRST * n)), n - length, step) if a + length < n]
+    if not starts:
+        return None
+    out = [(_beyond_range(v, a, a + length, span), a) for a in starts]
+    inside = [a for b, a in out if b <= BEYOND]
+    if inside:
+        return max(inside)
+    b, a = min(out)
+    return a
+
 
 class Record:
     """Checked (t, v, y) with the held-out split, the input's holds, rate and
@@ -23,9 +95,17 @@ class Record:
     ``t = None``: no time axis (a quasi-static point sequence, e.g. a B-H
     loop); the sample index is the only axis.  A datetime or timedelta `t`
     (numpy or pandas) is read as seconds from its first sample.
+
+    The held-out part is ``validation`` of the record: its end
+    (``held_out="last"``), or, with ``held_out="auto"``, its end unless the
+    end drives the input more than :data:`BEYOND` of the span beyond the
+    rest's range (a record whose amplitude grows); then the block of the
+    same length inside the record chosen by :func:`inner_block` (when it
+    leaves the range less than half as far as the end does).  The held-out
+    samples are ``held_start ... held_end - 1``.
     """
 
-    def __init__(self, t, v, y, validation):
+    def __init__(self, t, v, y, validation, held_out="auto"):
         self.v = as_signal(v, "v", min_length=2)
         self.y = as_signal(y, "y", min_length=2)
         n = self.v.size
@@ -52,18 +132,32 @@ class Record:
         frac = as_scalar(validation, "validation")
         if not 0.0 < frac < 0.9:
             raise ValueError(f"Parameter validation is {frac} but should be a fraction in (0, 0.9) "
-                             "(the last part of the record is held out)")
+                             "(that share of the record is held out)")
+        if held_out not in HELD_OUT:
+            raise ValueError(f"Parameter held_out is {held_out!r} but should be one of {HELD_OUT}")
         self.n = n
         self.k_val = int(round(n * (1.0 - frac)))
         if self.k_val < 50 or n - self.k_val < 20:
             raise ValueError(f"Parameters v and y have {n} samples; at least 50 training and 20 held-out "
                              f"samples are needed (validation = {frac})")
-        self.train = np.zeros(n, bool)
-        self.train[:self.k_val] = True
         self.vmin, self.vmax = float(self.v.min()), float(self.v.max())
         self.span = self.vmax - self.vmin
         if self.span <= 0:
             raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
+        # the held-out block: the end, or (auto) a block inside the record when
+        # the end leaves the rest's input range
+        self.held_start, self.held_end = self.k_val, n
+        #: how far the end block would have left the range when the block was moved (else 0)
+        self.held_moved_from_end = 0.0
+        if held_out == "auto":
+            end = _beyond_range(self.v, self.k_val, n, self.span)
+            if end > BEYOND:
+                a = inner_block(self.v, n - self.k_val, self.span)
+                if a is not None and _beyond_range(self.v, a, a + n - self.k_val, self.span) < 0.5 * end:
+                    self.held_start, self.held_end = a, a + n - self.k_val
+                    self.held_moved_from_end = end
+        self.train = np.ones(n, bool)
+        self.train[self.held_start:self.held_end] = False
         self.y_span = float(np.ptp(self.y))
         if self.y_span <= 0:
             raise ValueError(f"Parameter y is constant ({self.y[0]}); there is no response to diagnose")
@@ -102,9 +196,28 @@ class Record:
         """How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0 when it stays inside): there the plays
         whose thresholds the fitted part never reached are extrapolated."""
-        vt, vh = self.v[self.train], self.v[~self.train]
-        out = max(float(vh.max() - vt.max()), 0.0) + max(float(vt.min() - vh.min()), 0.0)
-        return out / self.span
+        return _beyond_range(self.v, self.held_start, self.held_end, self.span)
+
+    @property
+    def held_out_in_middle(self):
+        """Whether the held-out block lies inside the record (not at its end)."""
+        return self.held_end < self.n
+
+    def held_interval(self):
+        """The held-out block's first and last sample, in seconds (or sample
+        indices without a time axis)."""
+        a, b = self.held_start, self.held_end - 1
+        return (float(self.t[a]), float(self.t[b])) if self.t is not None else (a, b)
+
+    def held_out_line(self):
+        """The report's line on a block held out inside the record ("" when
+        the end is held out)."""
+        if not self.held_out_in_middle:
+            return ""
+        a, b = self.held_interval()
+        unit = " s" if self.t is not None else " (sample index)"
+        return (f"held out: {a:g} ... {b:g}{unit} inside the record, not its end (the end drives the input "
+                f"{100 * self.held_moved_from_end:.0f} % of its span beyond the rest's range)")
 
 
 def _hf_noise(x):

@@ -8,7 +8,7 @@ import numpy as np
 from ..identify.parts import PARTS, Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import PartsModel, Structure, VariableProjection
-from .record import BEYOND, Record, noise_floor
+from .record import BEYOND, Record, caution, noise_floor
 from .signatures import evidence as _evidence
 
 #: the canonical effect names, in the order the candidates are tried
@@ -56,7 +56,7 @@ def _rms(a):
     return float(np.sqrt(np.mean(a ** 2))) if a.size else 0.0
 
 
-def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress):
+def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress, held_out="auto"):
     """The search behind :func:`hystcomp.diagnose.diagnose`; returns the
     keyword arguments of a :class:`~hystcomp.diagnose.report.Diagnosis`.
 
@@ -69,7 +69,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
     try:
         if bar.disable:
             return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
-                           lambda s: None, lambda desc: None)
+                           lambda s: None, lambda desc: None, held_out)
 
         def say(s):
             bar.write("diagnose: " + s, file=sys.stderr)
@@ -78,14 +78,14 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
             bar.set_description_str(desc, refresh=False)
             bar.update(1)
 
-        return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick)
+        return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out)
     finally:
         bar.close()
 
 
-def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick):
+def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto"):
     t0 = time.perf_counter()
-    rec = Record(t, v, y, validation)
+    rec = Record(t, v, y, validation, held_out)
     ctx = base_context(rec, n_thresholds, thresholds)
     held = ~rec.train
     vp = VariableProjection(ctx, rec.y, rec.train)
@@ -100,6 +100,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     sigma, noise_info = noise_floor(rec, rec.y - cur.prediction)
     ctx.noise = sigma
     rms0 = rms_val(cur)
+    if rec.held_out_in_middle:
+        say(rec.held_out_line())
     say(f"base PI ({ctx.thresholds.size} plays) held-out RMS {rms0:.4g}, noise floor {sigma:.4g} "
         f"({noise_info['method']})  [{time.perf_counter() - t0:.1f} s]")
     first_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
@@ -349,16 +351,14 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     verdict = "explained" if not remaining else "unexplained"
     beyond = rec.beyond_fitted_range
     if beyond > BEYOND:
-        say(f"caution: the held-out part drives the input {100 * beyond:.0f} % of its span beyond the fitted "
-            "part's range (its residual there is partly the loop's extrapolation)")
+        say("caution: " + caution(beyond))
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
     return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
-                validation=((float(rec.t[rec.k_val]), float(rec.t[-1])) if rec.t is not None
-                            else (rec.k_val, rec.n - 1)),
-                held_out_beyond_fitted_range=beyond,
+                validation=rec.held_interval(), held_out_beyond_fitted_range=beyond,
+                held_out_moved=rec.held_moved_from_end,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
@@ -404,8 +404,14 @@ def base_context(rec, n_thresholds=20, thresholds=None):
     """The parts' :class:`~hystcomp.identify.parts.Context` of a record:
     its scaling and clock, and the base model's play thresholds (`thresholds`
     in input units when given, else :func:`play_thresholds`)."""
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds,
-                  fit_end=None if rec.dt is None else rec.k_val * rec.dt)
+    if rec.dt is None:
+        fit_end = held = None
+    elif rec.held_out_in_middle:
+        fit_end, held = None, (rec.held_start * rec.dt, rec.held_end * rec.dt)
+    else:
+        fit_end, held = rec.held_start * rec.dt, None
+    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds, fit_end=fit_end,
+                  held_out=held)
     if thresholds is not None:
         r = np.asarray(thresholds, dtype=np.float64) / rec.scale
         ctx.thresholds = np.concatenate([[0.0], r[r > 0]])

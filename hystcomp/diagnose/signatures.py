@@ -83,6 +83,34 @@ def _static_nuisance(rec, bins=12):
     return np.column_stack([H * up, H * ~up])
 
 
+#: windows over the record of the local frequency (:func:`_local_frequency`)
+FREQUENCY_WINDOWS = 10
+
+
+def _moving_mean(x, m):
+    """Mean over a centred window of `m` samples (edges: the window shrinks)."""
+    c = np.concatenate([[0.0], np.cumsum(x)])
+    k = np.arange(x.size)
+    lo, hi = np.maximum(k - m // 2, 0), np.minimum(k + m // 2 + 1, x.size)
+    return (c[hi] - c[lo]) / (hi - lo)
+
+
+def _local_frequency(rec):
+    """The excitation's local angular frequency, standardised (mean 0,
+    standard deviation 1; zeros when it does not change): over windows of
+    1/:data:`FREQUENCY_WINDOWS` of the record, the input rate's RMS over the
+    RMS of the input's excursion about its window mean (2 pi f for a sine of
+    frequency f), clipped to its 2nd and 98th percentiles.  A loop whose
+    gain changes with frequency (a lag, a rate-dependent stage) under a
+    chirp changes its gain in time along it, not with the clock."""
+    m = max(rec.n // FREQUENCY_WINDOWS, 3)
+    dv = rec.v - _moving_mean(rec.v, m)
+    f = np.sqrt(_moving_mean(rec.rate ** 2, m) / np.maximum(_moving_mean(dv ** 2, m), 1e-300))
+    f = np.clip(f, *np.percentile(f, [2.0, 98.0]))
+    sd = float(np.std(f))
+    return (f - f.mean()) / sd if sd > 1e-12 * max(float(np.abs(f).max()), 1e-300) else np.zeros(rec.n)
+
+
 def evidence(rec, e, pred, sigma, only=None):
     """Every effect's signature test on the residual `e` (all samples).
 
@@ -186,7 +214,8 @@ def evidence(rec, e, pred, sigma, only=None):
         # -- drift / gain drift: slow trend in time beyond static functions of the input
         sig = ("residual's slow trend in time (t, t^2) beyond static functions of the input, common to every "
                "input level")
-        sig_g = "residual along t times the model output (a gain changing in time), not mostly a trend of other input functions"
+        sig_g = ("residual along t times the model output (a gain changing in time) beyond the output times the "
+                 "excitation's local frequency, not mostly a trend of other input functions")
         if not timed:
             put("drift", sig, 0.0, PARTIAL, False, "untested: the record has no time axis")
             put("gain_drift", sig_g, 0.0, PARTIAL, False, "untested: the record has no time axis")
@@ -205,8 +234,13 @@ def evidence(rec, e, pred, sigma, only=None):
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
             # likewise a gain drift scales the whole output: beyond t times the
             # output, the trend must not be mostly one of the other input levels'
-            # functions (t and t^2 times v^2, the branch and branch x v)
-            along, by_level_g = _level_split(e, np.column_stack([N, T]), (tn * pc)[:, None],
+            # functions (t and t^2 times v^2, the branch and branch x v); and a
+            # gain that changes with the excitation's frequency (the output times
+            # the local frequency and its square) is a nuisance: under a chirp it
+            # changes along the record as a gain drift would
+            fq = _local_frequency(rec)
+            NG = np.column_stack([N, T, pc * fq, pc * (fq ** 2 - 1.0)])
+            along, by_level_g = _level_split(e, NG, (tn * pc)[:, None],
                                              [T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
             put("gain_drift", sig_g, along / sigma, PARTIAL, **_level_verdict(
                 along, by_level_g, sigma, "the gain's trend", " in other ways", "a gain drift"))

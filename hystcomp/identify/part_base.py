@@ -3,7 +3,7 @@ context (:class:`Context`), a part's nonlinear parameter (:class:`Parameter`),
 the base class :class:`Part` and the registry (:func:`register`, ``PARTS``).
 """
 
-from collections import namedtuple
+from collections import OrderedDict, namedtuple
 
 import numpy as np
 
@@ -49,6 +49,11 @@ class Context:
         diagnosis holds out the rest); default `duration`.  Parts whose
         time functions must be extrapolated beyond it (:class:`SlowDrift`)
         place their knots before it.
+    held_out : (float, float) or None
+        Start and end time [s] of a held-out block inside the record (the
+        diagnosis holds out a block in the middle when the record's end
+        leaves the input range of the rest): the samples ``start <= t < end``
+        are not fitted, and parts with knots in time place none inside it.
 
     Examples
     --------
@@ -57,7 +62,7 @@ class Context:
     ([0.0, 0.25, 0.5, 0.75, 1.0], [0.0, 0.1])
     """
 
-    def __init__(self, v, dt, origin, scale, duration, n_thresholds=20, noise=0.0, fit_end=None):
+    def __init__(self, v, dt, origin, scale, duration, n_thresholds=20, noise=0.0, fit_end=None, held_out=None):
         self.v = np.ascontiguousarray(v, dtype=np.float64)
         self.n = self.v.size
         self.dt = None if dt is None else float(dt)
@@ -70,6 +75,27 @@ class Context:
         self.noise = float(noise)
         self.time = None if self.dt is None else np.arange(self.n) * self.dt
         self.fit_end = self.duration if fit_end is None else float(fit_end)
+        self.held_out = None if held_out is None else (float(held_out[0]), float(held_out[1]))
+        #: memo of the core's play columns (see :class:`~hystcomp.identify.search.VariableProjection`)
+        self.core_cache = OrderedDict()
+
+    def fitted_times(self):
+        """Boolean mask of the samples in time the weights are fitted on: up
+        to `fit_end`, outside the held-out block (None without time).
+
+        Examples
+        --------
+        >>> ctx = Context(np.zeros(6), 1.0, 0.0, 1.0, 6.0, held_out=(2.0, 4.0))
+        >>> ctx.fitted_times().tolist()
+        [True, True, False, False, True, True]
+        """
+        if self.time is None:
+            return None
+        fit = self.time <= (self.fit_end if self.fit_end else self.duration)
+        if self.held_out is not None:
+            a, b = self.held_out
+            fit &= ~((self.time >= a - 1e-9 * self.dt) & (self.time < b - 1e-9 * self.dt))
+        return fit
 
     def like(self, v):
         """The same context for another input `v` (same scaling and clock).
@@ -84,7 +110,7 @@ class Context:
         Context
         """
         ctx = Context(v, self.dt, self.origin, self.scale, self.duration, self.n_thresholds, self.noise,
-                      self.fit_end)
+                      self.fit_end, self.held_out)
         ctx.thresholds = self.thresholds.copy()      # set thresholds carry over (diagnose sets its own)
         return ctx
 

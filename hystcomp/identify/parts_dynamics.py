@@ -205,12 +205,35 @@ class GainDrift(Part):
         return columns * (1.0 + values["g"] * (s - 0.5))[:, None]
 
 
+def _knot_times(ctx, k):
+    """The `k` + 1 knots (from ``t = 0``) of a broken line in time over the
+    fitted part of the record when a block inside it is held out
+    (``ctx.held_out``): in equal shares of the fitted time, none inside the
+    block (the line crosses the block straight).
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(10), 1.0, 0.0, 1.0, 10.0, held_out=(4.0, 6.0))
+    >>> _knot_times(ctx, 4).tolist()
+    [0.0, 2.0, 6.0, 8.0, 10.0]
+    """
+    a, b = ctx.held_out
+    T = ctx.fit_end if ctx.fit_end else ctx.duration
+    F = np.linspace(0.0, T - (b - a), k + 1)          # knots in fitted time
+    return np.where(F < a, F, F + (b - a))
+
+
 def _time_hats(ctx, k):
     """Hat functions of a broken line in time with `k` equal segments over
-    ``0 ... fit_end`` (held at the last knot after it): the columns of the
-    knots after ``t = 0``, shape (n, k)."""
-    T = ctx.fit_end if ctx.fit_end else ctx.duration
-    s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
+    ``0 ... fit_end`` (held at the last knot after it; with a held-out block
+    inside the record, equal shares of the fitted time, see
+    :func:`_knot_times`): the columns of the knots after ``t = 0``, shape
+    (n, k)."""
+    if ctx.held_out is None:
+        T = ctx.fit_end if ctx.fit_end else ctx.duration
+        s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
+    else:
+        s = np.interp(ctx.time, _knot_times(ctx, k), np.arange(k + 1.0))
     return np.clip(1.0 - np.abs(s[:, None] - np.arange(1, k + 1)[None, :]), 0.0, None)
 
 
@@ -262,7 +285,7 @@ class SlowGainDrift(Part):
         if self.driver is None or self._y is None or self._y.size != ctx.n:
             return [zero]
         h = self._driver_output(ctx)
-        fit = ctx.time <= (ctx.fit_end if ctx.fit_end else ctx.duration)
+        fit = ctx.fitted_times()
         G = _time_hats(ctx, SLOW_GAIN_SEGMENTS) * (h - h[fit].mean())[:, None]
         g = np.linalg.lstsq(G[fit], (self._y - h)[fit], rcond=None)[0]
         return [{f"g{i + 1}": float(np.clip(x, -0.3, 0.3)) for i, x in enumerate(g)}, zero]

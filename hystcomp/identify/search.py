@@ -15,7 +15,6 @@ prediction exactly.
 
 import hashlib
 import math
-from collections import OrderedDict
 
 import numpy as np
 from scipy.optimize import minimize
@@ -148,7 +147,7 @@ def _core_columns(core, x, options, ctx):
     thresholds, the sampling step and the options.  The block returned is
     read-only (the parts' filters make new arrays).
     """
-    cache = ctx.__dict__.setdefault("_core_cache", OrderedDict())
+    cache = ctx.core_cache
     xk = "x" if x is ctx.x else hashlib.blake2b(np.ascontiguousarray(x).tobytes(), digest_size=16).digest()
     ok = tuple(sorted((k, np.asarray(v, dtype=np.float64).tobytes()) for k, v in options.items()))
     key = (xk, x.size, ctx.thresholds.tobytes(), ctx.dt, type(core).__name__, ok)

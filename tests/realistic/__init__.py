@@ -17,6 +17,8 @@ round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 :data:`HOLDOUT6` (``cases_holdout6.py``) was written after that and run once for the sixth
 round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
+:data:`HOLDOUT7` (``cases_holdout7.py``) was written after that and run once for the seventh
+round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -27,5 +29,6 @@ from .cases_holdout3 import HOLDOUT3  # noqa: F401
 from .cases_holdout4 import HOLDOUT4  # noqa: F401
 from .cases_holdout5 import HOLDOUT5  # noqa: F401
 from .cases_holdout6 import HOLDOUT6  # noqa: F401
+from .cases_holdout7 import HOLDOUT7  # noqa: F401
 
-ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6}
+ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7}
