@@ -28,6 +28,54 @@ def _jsonable(x):
     return x
 
 
+#: a reversal of the input counts when it moves back from its last extreme by
+#: this share of the span (or five noise widths): the half-cycles of the loops
+#: figure, not the noise's sign changes during a hold
+REVERSAL = 0.02
+
+
+def reversals(v, tol):
+    """Indices of the input's reversals: the extremes from which it moved
+    back by more than `tol` (a noisy hold is no reversal).
+
+    Parameters
+    ----------
+    v : ndarray
+        Input samples.
+    tol : float
+        How far the input must move back from an extreme [input units].
+
+    Returns
+    -------
+    ndarray of int
+
+    Examples
+    --------
+    >>> v = np.array([0.0, 1.0, 1.01, 0.99, 1.0, 2.0, 1.0, 0.0, 0.5])
+    >>> reversals(v, 0.1).tolist()
+    [5, 7]
+    """
+    out, direction, ext = [], 0, 0
+    for k in range(1, v.size):
+        if direction == 0:
+            # the first move by more than tol sets the direction
+            if abs(v[k] - v[0]) > tol:
+                direction, ext = (1 if v[k] > v[0] else -1), k
+        elif direction > 0:
+            if v[k] >= v[ext]:
+                ext = k
+            elif v[ext] - v[k] > tol:
+                out.append(ext)
+                direction, ext = -1, k
+        else:
+            if v[k] <= v[ext]:
+                ext = k
+            elif v[k] - v[ext] > tol:
+                out.append(ext)
+                direction, ext = 1, k
+    return np.asarray(out, dtype=int)
+
+
 def _mark_held_out(ax, xax, rec):
     """Dashed lines at the held-out block's start (and end, inside the record)."""
     ax.axvline(xax[rec.held_start], color="k", ls="--", lw=0.8)
@@ -292,7 +340,7 @@ class Diagnosis:
         # loops on the held-out part, thinned to at most ~8 cycles on long records
         fig, ax = new_figure(1, 2, size=(13, 5))
         val = np.flatnonzero(~rec.train)
-        turns = val[np.flatnonzero(np.diff(np.sign(rec.rate[val])) != 0)]
+        turns = val[reversals(rec.v[val], max(REVERSAL * rec.span, 5.0 * rec.input_noise))]
         if turns.size > 16:
             step = int(math.ceil(turns.size / 16))
             sel = np.concatenate([np.arange(turns[j], turns[j + 1]) for j in range(0, turns.size - 1, step)])
