@@ -77,7 +77,7 @@ def inner_block(v, length, span):
     """
     n = v.size
     step = max(int(round(BLOCK_STEP * n)), 1)
-    starts = [a for a in range(int(round(BLOCK_FIRST * n)), n - length, step) if a + length < n]
+    starts = list(range(int(round(BLOCK_FIRST * n)), n - length, step))   # each block ends before n
     if not starts:
         return None
     out = [(_beyond_range(v, a, a + length, span), a) for a in starts]
