@@ -95,6 +95,38 @@ def test_flag_core_extensions_are_tentative_not_named():
         plt.close("all")
 
 
+def _saturation_with_ripple(floors, seed=5):
+    """A tanh-saturating output on a PI-like core with a low output noise (0.05 % of
+    the span), plus a 3.7 Hz ripple of `floors` noise RMS that is not tied to the
+    input (a hum no part describes)."""
+    rng = np.random.default_rng([seed, 9301])
+    dt = 1e-3
+    v = ex.decaying_sines(dt, 14_000, (0.6, 1.3), 45.0)
+    h = me.play_core(v, 90.0)
+    y = np.tanh(1.8 * h / np.abs(h).max())
+    sigma = 0.0005 * np.ptp(y)
+    t = np.arange(len(v)) * dt
+    y = y + floors * sigma * np.sqrt(2.0) * np.sin(2 * np.pi * 3.7 * t + 0.3)
+    return t, v, y + sigma * rng.standard_normal(len(y))
+
+
+def test_what_leaves_more_than_ten_noise_floors_is_not_named():
+    # saturation removes over 90 % of the base misfit above the noise in both
+    # records (the saturation is 100 times the noise); a ripple of 6 noise floors
+    # leaves saturation named (unexplained), one of 15 leaves it tentative: more
+    # than OOV_LEFT = 10 floors left is not an explanation, whatever the share
+    from hystcomp.diagnose.search import OOV_LEFT
+
+    small = diagnose(*_saturation_with_ripple(6.0), progress=False)
+    assert small.effects == ["saturation"] and small.verdict == "unexplained", small.report()
+    assert small.misfit_share_explained > 0.9
+    big = diagnose(*_saturation_with_ripple(15.0), progress=False)
+    assert big.effects == [] and big.tentative == ["saturation"], big.report()
+    assert big.misfit_share_explained > 0.9
+    assert big.rms_heldout > OOV_LEFT * big.noise_floor
+    assert f"more than {OOV_LEFT:g} noise floors" in big.remaining["out_of_vocabulary"]
+
+
 def test_named_effects_explain_most_of_the_misfit():
     # the counterpart: a saturating output on a PI core is named, and its model
     # removes nearly all of the misfit above the noise
