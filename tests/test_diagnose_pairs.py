@@ -124,7 +124,7 @@ def test_what_leaves_more_than_ten_noise_floors_is_not_named():
     assert big.effects == [] and big.tentative == ["saturation"], big.report()
     assert big.misfit_share_explained > 0.9
     assert big.rms_heldout > OOV_LEFT * big.noise_floor
-    assert f"more than {OOV_LEFT:g} noise floors" in big.remaining["out_of_vocabulary"]
+    assert f"naming allows at most {OOV_LEFT:g}" in big.remaining["out_of_vocabulary"]
 
 
 def test_named_effects_explain_most_of_the_misfit():

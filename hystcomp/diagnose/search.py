@@ -337,9 +337,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             "fast structure the model misses; holds in the record would tell)")
     # most of the misfit outside the vocabulary: when the best model leaves more
     # than OOV_FLOOR noise floors and its extensions removed less than
-    # NAMED_SHARE of the base model's misfit above the noise, the extensions
-    # only nibble at a misfit of another kind (a core that is not PI): they are
-    # reported as tentative, not named
+    # NAMED_SHARE of the base model's misfit above the noise, or it leaves more
+    # than OOV_LEFT noise floors whatever the share, the extensions only nibble
+    # at a misfit of another kind (a core that is not PI): they are reported as
+    # tentative, not named
     tentative = []
     excess0 = rms0 ** 2 - sigma ** 2
     share = 1.0 - max(rms_final ** 2 - sigma ** 2, 0.0) / excess0 if excess0 > 0 else 1.0
@@ -347,16 +348,17 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         tentative, chosen = list(chosen), []
         for st in steps:
             st["tentative"] = True
+        tried = f"the best model within the vocabulary (PI + {', '.join(tentative)})"
         if share < NAMED_SHARE:
-            why = (f"removes only {100 * share:.0f} % of the base model's misfit above the noise "
-                   f"(naming needs {100 * NAMED_SHARE:.0f} %): most of the misfit")
+            what = (f"{tried} leaves {rms_final / sigma:.1f} noise floors and removes only {100 * share:.0f} % of "
+                    f"the base model's misfit above the noise (naming needs {100 * NAMED_SHARE:.0f} %): most of "
+                    "the misfit")
         else:
-            why = (f"removes {100 * share:.0f} % of the base model's misfit above the noise, but what is left "
-                   f"is more than {OOV_LEFT:g} noise floors (naming needs at most that): the misfit")
+            what = (f"{tried} removes {100 * share:.0f} % of the base model's misfit above the noise but leaves "
+                    f"{rms_final / sigma:.1f} noise floors (naming allows at most {OOV_LEFT:g}): what is left")
         remaining["out_of_vocabulary"] = (
-            f"the best model within the vocabulary (PI + {', '.join(tentative)}) leaves {rms_final / sigma:.1f} "
-            f"noise floors and {why} is of a kind hystcomp has no part for "
-            "(e.g. a hysteresis core that is not PI); the extensions are tentative, not named")
+            f"{what} is of a kind hystcomp has no part for (e.g. a hysteresis core that is not PI); the "
+            "extensions are tentative, not named")
         stopped += f"; extensions tentative: {', '.join(tentative)}"
     ambiguous = _alternatives(steps, chosen)
     for eff, alts in ambiguous.items():

@@ -40,7 +40,7 @@ class Delay(Part):
     #: lag that fits as well with as many parameters (at low frequency
     #: e^(-s T) and 1 / (1 + s T) agree to first order, and a lag that stands
     #: in for a dead time fits no better; a real lag fits clearly better than
-    #: a dead time on the realistic sets: 0.15 ... 440 noise variances)
+    #: a dead time on the realistic sets: 0.15 ... 450 noise variances)
     occam_rank = 0
 
     def _max(self, ctx):
