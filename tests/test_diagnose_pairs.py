@@ -95,6 +95,64 @@ def test_flag_core_extensions_are_tentative_not_named():
         plt.close("all")
 
 
+def _saturation_with_chatter(amplitude, seed=5):
+    """A tanh-saturating output on a PI-like core under a staircase with 1.5 s holds,
+    output noise 0.05 % of the span, plus a 37 Hz chatter while the input moves (its
+    amplitude `amplitude` noise RMS times the input's rate over its largest): no part
+    describes it, and the holds, where it is silent, confirm the noise floor."""
+    rng = np.random.default_rng([seed, 9301])
+    dt = 1e-3
+    levels = np.concatenate([[0.0], np.tile([40.0, -40.0], 6) * np.linspace(1.0, 0.5, 12)])
+    v = ex.staircase_holds(dt, levels, 1.5, 0.4)
+    t = np.arange(len(v)) * dt
+    h = me.play_core(v, 90.0)
+    y = np.tanh(1.8 * h / np.abs(h).max())
+    sigma = 0.0005 * np.ptp(y)
+    rate = np.abs(np.gradient(v, dt))
+    y = y + amplitude * sigma * rate / rate.max() * np.sin(2 * np.pi * 37.0 * t)
+    return t, v, y + sigma * rng.standard_normal(len(y))
+
+
+def _saturation_with_ripple(floors, seed=5):
+    """The same saturation under decaying sines (no holds), with a 3.7 Hz ripple of
+    `floors` noise RMS not tied to the input."""
+    rng = np.random.default_rng([seed, 9301])
+    dt = 1e-3
+    v = ex.decaying_sines(dt, 14_000, (0.6, 1.3), 45.0)
+    h = me.play_core(v, 90.0)
+    y = np.tanh(1.8 * h / np.abs(h).max())
+    sigma = 0.0005 * np.ptp(y)
+    t = np.arange(len(v)) * dt
+    y = y + floors * sigma * np.sqrt(2.0) * np.sin(2 * np.pi * 3.7 * t + 0.3)
+    return t, v, y + sigma * rng.standard_normal(len(y))
+
+
+def test_what_leaves_more_than_ten_confirmed_noise_floors_is_not_named():
+    # saturation (100 times the noise) removes over 98 % of the base misfit above
+    # the noise in every record here.  With the floor confirmed by the holds, a
+    # chatter that leaves 5.5 noise floors keeps saturation named (unexplained),
+    # one that leaves 13 leaves it tentative: more than OOV_LEFT = 10 confirmed
+    # floors left is not an explanation, whatever the share
+    from hystcomp.diagnose.search import OOV_LEFT
+
+    small = diagnose(*_saturation_with_chatter(30.0), progress=False)
+    assert "holds" in small.noise_info
+    assert small.effects == ["saturation"] and small.verdict == "unexplained", small.report()
+    assert 3.0 < small.rms_heldout / small.noise_floor < OOV_LEFT
+    big = diagnose(*_saturation_with_chatter(80.0), progress=False)
+    assert "holds" in big.noise_info
+    assert big.effects == [] and big.tentative == ["saturation"], big.report()
+    assert big.misfit_share_explained > 0.98
+    assert big.rms_heldout > OOV_LEFT * big.noise_floor
+    assert f"naming allows at most {OOV_LEFT:g}" in big.remaining["out_of_vocabulary"]
+    # without holds the floor is the high-frequency estimate only, and the floors
+    # left do not hold the part back (smooth B-H loops: tests/test_diagnose.py)
+    ripple = diagnose(*_saturation_with_ripple(15.0), progress=False)
+    assert "holds" not in ripple.noise_info
+    assert ripple.rms_heldout > OOV_LEFT * ripple.noise_floor
+    assert ripple.effects == ["saturation"] and ripple.verdict == "unexplained", ripple.report()
+
+
 def test_named_effects_explain_most_of_the_misfit():
     # the counterpart: a saturating output on a PI core is named, and its model
     # removes nearly all of the misfit above the noise

@@ -105,7 +105,9 @@ class Diagnosis:
     tentative : list of str
         Extensions the search added but does not name, because the model
         with them still leaves more than 3 noise floors and they removed less
-        than 90 % of the base model's misfit above the noise (the misfit is
+        than 90 % of the base model's misfit above the noise, or it leaves
+        more than 10 noise floors whatever they removed on a record whose
+        holds confirm the floor (the misfit is
         mostly of a kind no part describes; ``remaining`` says so under
         ``out_of_vocabulary``).  Empty otherwise.
     ambiguous : dict

@@ -137,6 +137,10 @@ class Part:
     description = ""
     #: order inside the slot (smaller first)
     order = 50
+    #: the diagnosis' tie-break between parts that fit equally well with as
+    #: many nonlinear parameters: the lower rank is named (see
+    #: :data:`hystcomp.diagnose.search.PARSIMONY`)
+    occam_rank = 1
 
     def parameters(self, ctx, kinds):
         """The nonlinear parameters (list of :class:`Parameter`) for a record

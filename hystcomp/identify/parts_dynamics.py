@@ -36,6 +36,12 @@ class Delay(Part):
     order = 10
     needs_time = True
     description = "dead time before the hysteresis"
+    #: a dead time shifts the input without changing its shape: named before a
+    #: lag that fits as well with as many parameters (at low frequency
+    #: e^(-s T) and 1 / (1 + s T) agree to first order, and a lag that stands
+    #: in for a dead time fits no better; a real lag fits clearly better than
+    #: a dead time on the realistic sets: 0.15 ... 450 noise variances)
+    occam_rank = 0
 
     def _max(self, ctx):
         return float(min(max(20.0, 0.002 * ctx.n), 0.05 * ctx.n))

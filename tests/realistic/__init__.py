@@ -19,6 +19,8 @@ round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 :data:`HOLDOUT7` (``cases_holdout7.py``) was written after that and run once for the seventh
 round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
+:data:`HOLDOUT8` (``cases_holdout8.py``) was written after that and run once for the eighth
+round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -30,5 +32,9 @@ from .cases_holdout4 import HOLDOUT4  # noqa: F401
 from .cases_holdout5 import HOLDOUT5  # noqa: F401
 from .cases_holdout6 import HOLDOUT6  # noqa: F401
 from .cases_holdout7 import HOLDOUT7  # noqa: F401
+from .cases_holdout8 import HOLDOUT8  # noqa: F401
 
-ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7}
+ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8}
+
+__all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
+           "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "ALL"]
