@@ -180,6 +180,20 @@ def test_holdout6_mechanisms_follow_their_laws():
     assert ratio[k > 0.9 * len(r.v)].mean() > ratio[k < 0.1 * len(r.v)].mean() + 0.03
 
 
+def _assert_well_formed(r, name):
+    """A record of the later sets: its name, finite samples, 8,000-40,000 of them on a
+    uniform step of 200 Hz ... 2 kHz, known effect families and verdict, noise > 0."""
+    assert r.name == name
+    assert np.isfinite(r.v).all() and np.isfinite(r.y).all()
+    assert len(r.v) == len(r.y) == len(r.t) and 8_000 <= len(r.v) <= 40_000
+    dt = np.diff(r.t)
+    assert dt[0] > 0 and np.allclose(dt, dt[0], rtol=1e-9, atol=0)
+    assert 200.0 <= 1 / dt[0] <= 2_000.0 + 1e-6
+    assert set(r.expect_effects) <= set(FAMILIES)
+    assert r.expect_verdict in ("explained", "unexplained", "either")
+    assert r.noise_std > 0
+
+
 def test_holdout7_was_measured_joined_all_and_is_well_formed():
     # written after HOLDOUT6 was measured, measured once in round 7, in ALL since
     assert set(HOLDOUT7) <= set(ALL) and len(HOLDOUT7) == 10
@@ -188,15 +202,7 @@ def test_holdout7_was_measured_joined_all_and_is_well_formed():
     for name, fn in HOLDOUT7.items():
         recs = [fn(s) for s in range(3)]
         for r in recs:
-            assert r.name == name
-            assert np.isfinite(r.v).all() and np.isfinite(r.y).all()
-            assert len(r.v) == len(r.y) == len(r.t) and 8_000 <= len(r.v) <= 40_000
-            dt = np.diff(r.t)
-            assert dt[0] > 0 and np.allclose(dt, dt[0], rtol=1e-9, atol=0)
-            assert 200.0 <= 1 / dt[0] <= 2_000.0 + 1e-6
-            assert set(r.expect_effects) <= set(FAMILIES)
-            assert r.expect_verdict in ("explained", "unexplained", "either")
-            assert r.noise_std > 0
+            _assert_well_formed(r, name)
         verdicts.add(recs[0].expect_verdict)
         # seeds differ in more than the noise: the magnitudes are drawn from the seed
         assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
@@ -302,15 +308,7 @@ def test_holdout8_was_measured_joined_all_and_is_well_formed():
     for name, fn in HOLDOUT8.items():
         recs = [fn(s) for s in range(3)]
         for r in recs:
-            assert r.name == name
-            assert np.isfinite(r.v).all() and np.isfinite(r.y).all()
-            assert len(r.v) == len(r.y) == len(r.t) and 8_000 <= len(r.v) <= 40_000
-            dt = np.diff(r.t)
-            assert dt[0] > 0 and np.allclose(dt, dt[0], rtol=1e-9, atol=0)
-            assert 200.0 <= 1 / dt[0] <= 2_000.0 + 1e-6
-            assert set(r.expect_effects) <= set(FAMILIES)
-            assert r.expect_verdict in ("explained", "unexplained", "either")
-            assert r.noise_std > 0
+            _assert_well_formed(r, name)
             # the output noise is 0.2 % of the span; the monitor noise 1e-4 ... 5e-4 of the input's
             assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
         verdicts.add(recs[0].expect_verdict)
