@@ -169,3 +169,21 @@ def test_named_effects_explain_most_of_the_misfit():
     # and no near tie: the clipping map, next best, gains about 0.77 of the tanh
     # map's held-out gain on the seen tanh-output cases (near tie: 0.9)
     assert rep.ambiguous == {}, rep.report()
+
+
+def test_a_part_replaced_by_another_of_its_effect_is_titled_by_both_parts():
+    # HOLDOUT7's butterfly (seed 0): the revision replaces the algebraic saturation
+    # map by the tanh map; "saturation (replaced by saturation)" said nothing, the
+    # gap figure's step title names the two parts
+    import matplotlib.pyplot as plt
+    from realistic import ALL
+
+    r = ALL["holdout7_oov_preisach_butterfly_trapezoids"](0)
+    rep = diagnose(r.t, r.v, r.y, progress=False)
+    same = [rv for rv in rep.revisions if rv["by"] is not None and rv["effect_before"] == rv["effect_after"]]
+    assert same, rep.report()
+    titles = [a.get_title() for a in rep.plots()["gap"].axes]
+    plt.close("all")
+    for rv in same:
+        step_title = titles[rv["step"]]
+        assert f"({rv['replaced']}, replaced by {rv['by']} in the revision)" in step_title, titles

@@ -366,7 +366,11 @@ class Diagnosis:
         for st in self.steps:
             rv = st["evidence"].get("revised")
             if rv is not None and rv["by"] is not None:
-                lab = f"+ {rv['effect_before']} (replaced by {rv['effect_after']} in the revision)"
+                if rv["effect_after"] == rv["effect_before"]:
+                    # another part of the same effect (an algebraic saturation map by a tanh map)
+                    lab = f"+ {rv['effect_before']} ({rv['replaced']}, replaced by {rv['by']} in the revision)"
+                else:
+                    lab = f"+ {rv['effect_before']} (replaced by {rv['effect_after']} in the revision)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
                 if st.get("alternatives"):
