@@ -95,6 +95,13 @@ def test_flag_core_extensions_are_tentative_not_named():
         plt.close("all")
 
 
+def _tanh_saturated(v):
+    """A PI-like core behind a tanh output map, and a noise level of 0.05 % of its span."""
+    h = me.play_core(v, 90.0)
+    y = np.tanh(1.8 * h / np.abs(h).max())
+    return y, 0.0005 * np.ptp(y)
+
+
 def _saturation_with_chatter(amplitude, seed=5):
     """A tanh-saturating output on a PI-like core under a staircase with 1.5 s holds,
     output noise 0.05 % of the span, plus a 37 Hz chatter while the input moves (its
@@ -105,9 +112,7 @@ def _saturation_with_chatter(amplitude, seed=5):
     levels = np.concatenate([[0.0], np.tile([40.0, -40.0], 6) * np.linspace(1.0, 0.5, 12)])
     v = ex.staircase_holds(dt, levels, 1.5, 0.4)
     t = np.arange(len(v)) * dt
-    h = me.play_core(v, 90.0)
-    y = np.tanh(1.8 * h / np.abs(h).max())
-    sigma = 0.0005 * np.ptp(y)
+    y, sigma = _tanh_saturated(v)
     rate = np.abs(np.gradient(v, dt))
     y = y + amplitude * sigma * rate / rate.max() * np.sin(2 * np.pi * 37.0 * t)
     return t, v, y + sigma * rng.standard_normal(len(y))
@@ -119,9 +124,7 @@ def _saturation_with_ripple(floors, seed=5):
     rng = np.random.default_rng([seed, 9301])
     dt = 1e-3
     v = ex.decaying_sines(dt, 14_000, (0.6, 1.3), 45.0)
-    h = me.play_core(v, 90.0)
-    y = np.tanh(1.8 * h / np.abs(h).max())
-    sigma = 0.0005 * np.ptp(y)
+    y, sigma = _tanh_saturated(v)
     t = np.arange(len(v)) * dt
     y = y + floors * sigma * np.sqrt(2.0) * np.sin(2 * np.pi * 3.7 * t + 0.3)
     return t, v, y + sigma * rng.standard_normal(len(y))

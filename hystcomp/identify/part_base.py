@@ -79,6 +79,12 @@ class Context:
         #: memo of the core's play columns (see :class:`~hystcomp.identify.search.VariableProjection`)
         self.core_cache = OrderedDict()
 
+    @property
+    def fitted_until(self):
+        """The time up to which the weights are fitted [s]: `fit_end`, or the
+        duration when `fit_end` is unset or 0."""
+        return self.fit_end if self.fit_end else self.duration
+
     def fitted_times(self):
         """Boolean mask of the samples in time the weights are fitted on: up
         to `fit_end`, outside the held-out block (None without time).
@@ -91,7 +97,7 @@ class Context:
         """
         if self.time is None:
             return None
-        fit = self.time <= (self.fit_end if self.fit_end else self.duration)
+        fit = self.time <= self.fitted_until
         if self.held_out is not None:
             a, b = self.held_out
             fit &= ~((self.time >= a - 1e-9 * self.dt) & (self.time < b - 1e-9 * self.dt))

@@ -224,7 +224,7 @@ def _knot_times(ctx, k):
     [0.0, 2.0, 6.0, 8.0, 10.0]
     """
     a, b = ctx.held_out
-    T = ctx.fit_end if ctx.fit_end else ctx.duration
+    T = ctx.fitted_until
     F = np.linspace(0.0, T - (b - a), k + 1)          # knots in fitted time
     return np.where(F < a, F, F + (b - a))
 
@@ -236,7 +236,7 @@ def _time_hats(ctx, k):
     :func:`_knot_times`): the columns of the knots after ``t = 0``, shape
     (n, k)."""
     if ctx.held_out is None:
-        T = ctx.fit_end if ctx.fit_end else ctx.duration
+        T = ctx.fitted_until
         s = np.minimum(ctx.time / T, 1.0) * k          # time in segments, held at k after T
     else:
         s = np.interp(ctx.time, _knot_times(ctx, k), np.arange(k + 1.0))
