@@ -21,7 +21,23 @@ BEYOND = 0.05
 BLOCK_STEP = 0.05
 BLOCK_FIRST = 0.3
 
-HELD_OUT = ("auto", "last")
+#: held-out blocks spread over the record with ``held_out="blocks"``
+N_BLOCKS = 3
+
+HELD_OUT = ("auto", "last", "blocks")
+
+#: what ``held_out="auto"`` does (experiment)
+AUTO = "blocks"
+
+
+def spread_blocks(n, length, m=N_BLOCKS):
+    """`m` held-out blocks of `length` samples in all, spread over the record
+    after :data:`BLOCK_FIRST` of it with equal fitted stretches between and
+    after them: (start, end) sample pairs."""
+    first = int(round(BLOCK_FIRST * n))
+    L = length // m
+    g = (n - first - m * L) / m
+    return [(int(round(first + i * (L + g))), int(round(first + i * (L + g))) + L) for i in range(m)]
 
 
 def caution(beyond, short=False):
@@ -149,15 +165,21 @@ class Record:
         self.held_start, self.held_end = self.k_val, n
         #: how far the end block would have left the range when the block was moved (else 0)
         self.held_moved_from_end = 0.0
-        if held_out == "auto":
+        self.blocks = [(self.k_val, n)]
+        if held_out == "blocks" or (held_out == "auto" and AUTO == "blocks"):
+            self.blocks = spread_blocks(n, n - self.k_val)
+            self.held_start, self.held_end = self.blocks[0][0], self.blocks[-1][1]
+        elif held_out == "auto":
             end = _beyond_range(self.v, self.k_val, n, self.span)
             if end > BEYOND:
                 a = inner_block(self.v, n - self.k_val, self.span)
                 if a is not None and _beyond_range(self.v, a, a + n - self.k_val, self.span) < 0.5 * end:
                     self.held_start, self.held_end = a, a + n - self.k_val
                     self.held_moved_from_end = end
+                    self.blocks = [(a, a + n - self.k_val)]
         self.train = np.ones(n, bool)
-        self.train[self.held_start:self.held_end] = False
+        for a, b in self.blocks:
+            self.train[a:b] = False
         self.y_span = float(np.ptp(self.y))
         if self.y_span <= 0:
             raise ValueError(f"Parameter y is constant ({self.y[0]}); there is no response to diagnose")
@@ -196,7 +218,10 @@ class Record:
         """How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0 when it stays inside): there the plays
         whose thresholds the fitted part never reached are extrapolated."""
-        return _beyond_range(self.v, self.held_start, self.held_end, self.span)
+        if len(self.blocks) == 1:
+            return _beyond_range(self.v, self.held_start, self.held_end, self.span)
+        vh, rest = self.v[~self.train], self.v[self.train]
+        return (max(float(vh.max() - rest.max()), 0.0) + max(float(rest.min() - vh.min()), 0.0)) / self.span
 
     @property
     def held_out_in_middle(self):

@@ -428,7 +428,7 @@ def base_context(rec, n_thresholds=20, thresholds=None):
     if rec.dt is None:
         fit_end = held = None
     elif rec.held_out_in_middle:
-        fit_end, held = None, (rec.held_start * rec.dt, rec.held_end * rec.dt)
+        fit_end, held = None, [(a * rec.dt, b * rec.dt) for a, b in rec.blocks]
     else:
         fit_end, held = rec.held_start * rec.dt, None
     ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds, fit_end=fit_end,

@@ -223,10 +223,14 @@ def _knot_times(ctx, k):
     >>> _knot_times(ctx, 4).tolist()
     [0.0, 2.0, 6.0, 8.0, 10.0]
     """
-    a, b = ctx.held_out
     T = ctx.fitted_until
-    F = np.linspace(0.0, T - (b - a), k + 1)          # knots in fitted time
-    return np.where(F < a, F, F + (b - a))
+    blocks = ctx.held_out
+    F = np.linspace(0.0, T - sum(b - a for a, b in blocks), k + 1)     # knots in fitted time
+    out, skipped = F.copy(), 0.0
+    for a, b in blocks:
+        out[F >= a - skipped] += b - a            # knots at or after the block's start (fitted time)
+        skipped += b - a
+    return out
 
 
 def _time_hats(ctx, k):
