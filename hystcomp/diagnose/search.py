@@ -332,10 +332,18 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     rho = float(e[1:] @ e[:-1] / (e @ e)) if float(e @ e) > 0 else 0.0
     noise_info["lag1_autocorrelation"] = round(rho, 4)
     if noise_info["method"] == "high_frequency" and rho > WHITE:
-        remaining["correlated_residual"] = (
-            f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "
-            f"{WHITE}), so the noise floor from its high-frequency part is not reliable (coloured noise or "
-            "fast structure the model misses; holds in the record would tell)")
+        head = (f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "
+                f"{WHITE})")
+        if "holds" in noise_info:
+            # the holds' scatter is at most the high-frequency floor: the floor stands,
+            # the correlation is structure the model misses
+            remaining["correlated_residual"] = (
+                head + f": structure the model misses (the output's scatter during the holds, "
+                f"{noise_info['holds']:.3g}, confirms the noise floor {sigma:.3g})")
+        else:
+            remaining["correlated_residual"] = (
+                head + ", so the noise floor from its high-frequency part is not reliable (coloured noise or "
+                "fast structure the model misses; holds in the record would tell)")
     # most of the misfit outside the vocabulary: when the best model leaves more
     # than OOV_FLOOR noise floors and its extensions removed less than
     # NAMED_SHARE of the base model's misfit above the noise, or it leaves more
