@@ -49,11 +49,12 @@ class Context:
         diagnosis holds out the rest); default `duration`.  Parts whose
         time functions must be extrapolated beyond it (:class:`SlowDrift`)
         place their knots before it.
-    held_out : (float, float) or None
-        Start and end time [s] of a held-out block inside the record (the
-        diagnosis holds out a block in the middle when the record's end
-        leaves the input range of the rest): the samples ``start <= t < end``
-        are not fitted, and parts with knots in time place none inside it.
+    held_out : (float, float), sequence of them, or None
+        Start and end time [s] of a held-out block inside the record, or of
+        several (the diagnosis holds out a block in the middle when the
+        record's end leaves the input range of the rest, or blocks spread
+        over the record): the samples ``start <= t < end`` are not fitted,
+        and parts with knots in time place none inside a block.
 
     Examples
     --------
@@ -94,6 +95,8 @@ class Context:
         >>> ctx = Context(np.zeros(6), 1.0, 0.0, 1.0, 6.0, held_out=(2.0, 4.0))
         >>> ctx.fitted_times().tolist()
         [True, True, False, False, True, True]
+        >>> Context(np.zeros(6), 1.0, 0.0, 1.0, 6.0, held_out=[(1.0, 2.0), (4.0, 5.0)]).fitted_times().tolist()
+        [True, False, True, True, False, True]
         """
         if self.time is None:
             return None
