@@ -1,5 +1,6 @@
 """The HOLDOUT9 set: written after HOLDOUT8 was measured (2026-11-25, ninth round), to be run once
-for the ninth round's final measurement (docs/diagnose.md); kept out of ALL until then.
+for the ninth round's final measurement (docs/diagnose.md); run once (commit 91dbca8, 24 of 30
+runs right) and part of ALL since.
 
 Mechanisms and signals that the other sets do not have, or not in these combinations:
 
