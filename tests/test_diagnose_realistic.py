@@ -118,8 +118,8 @@ def test_explained_means_within_the_true_noise_at_the_bound(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 39/45 runs of the combined "
-                                        "cases of the ten sets (13/15 at seed 0)")
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 41/45 runs of the combined "
+                                        "cases of the ten sets (14/15 at seed 0)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
