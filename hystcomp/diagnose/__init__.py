@@ -35,6 +35,9 @@ refitted jointly (warm-started).  The verdict is ``"explained"`` only when
 the final held-out RMS is within 1.5 noise floors and no signature test
 fires on the final residual; otherwise ``"unexplained"``, with what
 remains (in time, against input, against rate, at the record's start).
+A record the held-out end leaves unexplained with no drift named is
+re-judged on blocks held out between fitted stretches (a drift that turns
+cannot be extrapolated into the end; ``held_out`` of :func:`diagnose`).
 
 Without a time axis (``t=None``: a quasi-static point sequence such as a
 B-H loop) rate dependence, creep, drift, gain drift and delay are reported
