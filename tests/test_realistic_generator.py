@@ -299,17 +299,19 @@ def test_holdout7_mechanisms_follow_their_laws():
     assert r.y.min() > -6 * r.noise_std and np.mean(r.y < 0.05 * r.y.max()) > 0.005
 
 
-def test_holdout8_was_measured_joined_all_and_is_well_formed():
-    # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
-    assert set(HOLDOUT8) <= set(ALL) and len(HOLDOUT8) == 10
-    assert all(n.startswith("holdout8_") for n in HOLDOUT8)
+def _assert_measured_set(H, prefix, effects):
+    """A later set of ten cases, in ALL: names, well-formed records of three seeds (the output
+    noise 0.2 % of the span), seeds that differ in more than the noise, every verdict kind,
+    the expected effect families `effects`, one clean and one out-of-vocabulary case, one pair
+    and nothing beyond pairs. Returns the seed-0 records by name."""
+    assert set(H) <= set(ALL) and len(H) == 10
+    assert all(n.startswith(prefix) for n in H)
     verdicts = set()
     first = {}
-    for name, fn in HOLDOUT8.items():
+    for name, fn in H.items():
         recs = [fn(s) for s in range(3)]
         for r in recs:
             _assert_well_formed(r, name)
-            # the output noise is 0.2 % of the span; the monitor noise 1e-4 ... 5e-4 of the input's
             assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
         verdicts.add(recs[0].expect_verdict)
         first[name] = recs[0]
@@ -317,12 +319,18 @@ def test_holdout8_was_measured_joined_all_and_is_well_formed():
         assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
         assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
     assert verdicts == {"explained", "unexplained", "either"}
-    assert {e for r in first.values() for e in r.expect_effects} == {
-        "creep", "rate_dependence", "drift", "output_saturation", "asymmetry", "delay", "initial_state"}
+    assert {e for r in first.values() for e in r.expect_effects} == effects
     assert sum(not r.expect_effects and r.expect_verdict == "explained" for r in first.values()) == 1
     assert sum(not r.expect_effects and r.expect_verdict == "unexplained" for r in first.values()) == 1
     assert sum(len(family(r.expect_effects)) == 2 for r in first.values()) == 1
     assert all(len(r.expect_effects) <= 2 for r in first.values())
+    return first
+
+
+def test_holdout8_was_measured_joined_all_and_is_well_formed():
+    # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
+    _assert_measured_set(HOLDOUT8, "holdout8_", {
+        "creep", "rate_dependence", "drift", "output_saturation", "asymmetry", "delay", "initial_state"})
 
 
 def _spread_at(v, y, level=0.0, tol=2.0):
@@ -494,28 +502,8 @@ def test_holdout8_mechanisms_follow_their_laws():
 
 def test_holdout9_was_measured_joined_all_and_is_well_formed():
     # written after HOLDOUT8 was measured, measured once in round 9 (24/30), in ALL since
-    assert set(HOLDOUT9) <= set(ALL) and len(HOLDOUT9) == 10
-    assert all(n.startswith("holdout9_") for n in HOLDOUT9)
-    verdicts = set()
-    first = {}
-    for name, fn in HOLDOUT9.items():
-        recs = [fn(s) for s in range(3)]
-        for r in recs:
-            _assert_well_formed(r, name)
-            # the output noise is 0.2 % of the span; the monitor noise 0 ... 4e-4 of the input's
-            assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
-        verdicts.add(recs[0].expect_verdict)
-        first[name] = recs[0]
-        # seeds differ in more than the noise: the magnitudes are drawn from the seed
-        assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
-        assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
-    assert verdicts == {"explained", "unexplained", "either"}
-    assert {e for r in first.values() for e in r.expect_effects} == {
-        "creep", "rate_dependence", "drift", "gain_drift", "asymmetry", "saturation", "delay", "initial_state"}
-    assert sum(not r.expect_effects and r.expect_verdict == "explained" for r in first.values()) == 1
-    assert sum(not r.expect_effects and r.expect_verdict == "unexplained" for r in first.values()) == 1
-    assert sum(len(family(r.expect_effects)) == 2 for r in first.values()) == 1
-    assert all(len(r.expect_effects) <= 2 for r in first.values())
+    first = _assert_measured_set(HOLDOUT9, "holdout9_", {
+        "creep", "rate_dependence", "drift", "gain_drift", "asymmetry", "saturation", "delay", "initial_state"})
     # two unipolar records (0 ... 100 V), the rest bipolar
     assert sum(r.v.min() > -1 and r.v.max() > 55 for r in first.values()) == 2
 
