@@ -78,9 +78,9 @@ def test_report_json_and_model_reproduces_heldout_rms():
     base = rep.base_model.simulate(d.v)
     assert np.sqrt(np.mean((d.y[k:] - base[k:]) ** 2)) == pytest.approx(rep.rms_before, rel=1e-9)
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 6
+    assert js["schema_version"] == 7
     for key in ("verdict", "noise_floor", "effects", "steps", "untested", "stopped", "remaining",
-                "rms_before_pct", "rms_after_pct"):
+                "rms_before_pct", "rms_after_pct", "held_out_blocks", "other_split"):
         assert key in js
     s = js["steps"][0]
     assert list(s)[:5] == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct"]
@@ -170,6 +170,9 @@ def test_piezo_record_initial_state_not_asymmetry():
     assert rep.effects[:1] == ["initial_state"] or (rep.verdict == "unexplained" and rep.remaining)
     assert rep.effects[0] == "initial_state"
     assert rep.rms_after < 0.2 * rep.rms_before
+    # unexplained (1.75 noise floors) with no drift named, so re-judged on blocks
+    # spread over the record; that names no drift either and is not taken
+    assert rep.other_split["held_out"] == "blocks" and "not taken" in rep.other_split["why"]
 
 
 def _bh(material):

@@ -41,7 +41,7 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert js["schema_version"] == 6
+    assert js["schema_version"] == 7
     assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
     assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]
@@ -220,6 +220,12 @@ def test_held_out_option(tmp_path, capsys):
     assert out["last"]["held_out_beyond_fitted_range"] > 0.05
     status, o, err = _run([path, "--quiet"], capsys)
     assert status == 0 and "inside the record" in o
+    # five blocks spread over the record: each inside it, the first after its first 30 %
+    status, o, err = _run([path, "--json", "--quiet", "--held-out", "blocks"], capsys)
+    assert status == 0, err
+    blocks = json.loads(o)["held_out_blocks"]
+    assert len(blocks) == 5 and blocks[0][0] >= 0.3 * t[-1] - 2e-3 and blocks[-1][1] < t[-1]
+    assert all(b[0] < b[1] < c[0] for b, c in zip(blocks, blocks[1:]))
     with pytest.raises(SystemExit) as exc:           # argparse: a choice, exit 2
         _run([path, "--held-out", "middle"], capsys)
     assert exc.value.code == 2 and "--held-out" in capsys.readouterr().err

@@ -79,7 +79,7 @@ def test_flag_core_extensions_are_tentative_not_named():
     assert rep.effects == [], rep.report()
     assert "out_of_vocabulary" in rep.remaining, rep.remaining
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 6
+    assert js["schema_version"] == 7
     assert js["effects"] == [] and js["tentative_effects"] == rep.tentative
     assert 0.0 <= js["misfit_share_explained"] < 0.9
     if rep.tentative:
@@ -142,6 +142,9 @@ def test_what_leaves_more_than_ten_confirmed_noise_floors_is_not_named():
     assert "holds" in small.noise_info
     assert small.effects == ["saturation"] and small.verdict == "unexplained", small.report()
     assert 3.0 < small.rms_heldout / small.noise_floor < OOV_LEFT
+    # the chatter correlates the residual; the holds' scatter confirms the floor,
+    # so the report says the correlation is missed structure, not doubt in the floor
+    assert "confirms the noise floor" in small.remaining["correlated_residual"]
     big = diagnose(*_saturation_with_chatter(80.0), progress=False)
     assert "holds" in big.noise_info
     assert big.effects == [] and big.tentative == ["saturation"], big.report()
@@ -154,6 +157,7 @@ def test_what_leaves_more_than_ten_confirmed_noise_floors_is_not_named():
     assert "holds" not in ripple.noise_info
     assert ripple.rms_heldout > OOV_LEFT * ripple.noise_floor
     assert ripple.effects == ["saturation"] and ripple.verdict == "unexplained", ripple.report()
+    assert "holds in the record would tell" in ripple.remaining["correlated_residual"]
 
 
 def test_named_effects_explain_most_of_the_misfit():

@@ -3,8 +3,8 @@
 import numpy as np
 import pytest
 
-from realistic import (ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOLDOUT6, HOLDOUT7, HOLDOUT8, TUNING,
-                       family)
+from realistic import (ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOLDOUT6, HOLDOUT7, HOLDOUT8, HOLDOUT9,
+                       TUNING, family)
 from realistic import excitations as ex
 from realistic.record import FAMILIES
 from realistic import mechanisms as me
@@ -299,17 +299,19 @@ def test_holdout7_mechanisms_follow_their_laws():
     assert r.y.min() > -6 * r.noise_std and np.mean(r.y < 0.05 * r.y.max()) > 0.005
 
 
-def test_holdout8_was_measured_joined_all_and_is_well_formed():
-    # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
-    assert set(HOLDOUT8) <= set(ALL) and len(HOLDOUT8) == 10
-    assert all(n.startswith("holdout8_") for n in HOLDOUT8)
+def _assert_measured_set(H, prefix, effects):
+    """A later set of ten cases, in ALL: names, well-formed records of three seeds (the output
+    noise 0.2 % of the span), seeds that differ in more than the noise, every verdict kind,
+    the expected effect families `effects`, one clean and one out-of-vocabulary case, one pair
+    and nothing beyond pairs. Returns the seed-0 records by name."""
+    assert set(H) <= set(ALL) and len(H) == 10
+    assert all(n.startswith(prefix) for n in H)
     verdicts = set()
     first = {}
-    for name, fn in HOLDOUT8.items():
+    for name, fn in H.items():
         recs = [fn(s) for s in range(3)]
         for r in recs:
             _assert_well_formed(r, name)
-            # the output noise is 0.2 % of the span; the monitor noise 1e-4 ... 5e-4 of the input's
             assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
         verdicts.add(recs[0].expect_verdict)
         first[name] = recs[0]
@@ -317,12 +319,18 @@ def test_holdout8_was_measured_joined_all_and_is_well_formed():
         assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
         assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
     assert verdicts == {"explained", "unexplained", "either"}
-    assert {e for r in first.values() for e in r.expect_effects} == {
-        "creep", "rate_dependence", "drift", "output_saturation", "asymmetry", "delay", "initial_state"}
+    assert {e for r in first.values() for e in r.expect_effects} == effects
     assert sum(not r.expect_effects and r.expect_verdict == "explained" for r in first.values()) == 1
     assert sum(not r.expect_effects and r.expect_verdict == "unexplained" for r in first.values()) == 1
     assert sum(len(family(r.expect_effects)) == 2 for r in first.values()) == 1
     assert all(len(r.expect_effects) <= 2 for r in first.values())
+    return first
+
+
+def test_holdout8_was_measured_joined_all_and_is_well_formed():
+    # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
+    _assert_measured_set(HOLDOUT8, "holdout8_", {
+        "creep", "rate_dependence", "drift", "output_saturation", "asymmetry", "delay", "initial_state"})
 
 
 def _spread_at(v, y, level=0.0, tol=2.0):
@@ -490,6 +498,275 @@ def test_holdout8_mechanisms_follow_their_laws():
         a, b = slice(0, 2 * per), slice(24 * per, 27 * per)
         assert _spread_at(r.v[b], r.y[b]) > 1.15 * _spread_at(r.v[a], r.y[a])
         assert np.ptp(r.y[b]) < np.ptp(r.y[per:2 * per]) - 5 * r.noise_std
+
+
+def test_holdout9_was_measured_joined_all_and_is_well_formed():
+    # written after HOLDOUT8 was measured, measured once in round 9 (24/30), in ALL since
+    first = _assert_measured_set(HOLDOUT9, "holdout9_", {
+        "creep", "rate_dependence", "drift", "gain_drift", "asymmetry", "saturation", "delay", "initial_state"})
+    # two unipolar records (0 ... 100 V), the rest bipolar
+    assert sum(r.v.min() > -1 and r.v.max() > 55 for r in first.values()) == 2
+
+
+def test_holdout9_mechanisms_follow_their_laws():
+    from scipy.integrate import quad, solve_ivp
+
+    from realistic import cases_holdout9 as h9
+
+    H = h9.HOLDOUT9
+    rng = np.random.default_rng(0)
+
+    # -- signals --
+    # ring-downs: each burst starts at 0 V and its positive peaks, one period apart, fall by
+    # exp(-1 / (f tau)) (a damped sine's successive peaks)
+    dt = 1 / 640
+    rd, bursts = h9._ring_downs(dt, 12_000, rng, 45.0)
+    for (a, A, f, tau), (b, *_) in zip(bursts[:-1], bursts[1:]):
+        seg = rd[a:b]
+        assert seg[0] == 0 and 0.3 * 45.0 <= A <= 45.0
+        per = int(round(1 / f / dt))
+        peaks = [seg[k:k + per].max() for k in range(0, len(seg) - per + 1, per)]
+        np.testing.assert_allclose(np.array(peaks[1:]) / peaks[:-1], np.exp(-1 / (f * tau)), rtol=0.01)
+    # shuffled triangles: each frequency twice, never twice in a row, each segment's spectrum
+    # peaking at its frequency
+    freqs = np.array([0.4, 1.5, 5.0, 13.0])
+    tri, edges, played = h9._shuffled_triangles(1 / 1600, freqs, 45.0, rng)
+    near = np.argmin(np.abs(played[:, None] - freqs[None, :]), axis=1)
+    assert sorted(near.tolist()) == [0, 0, 1, 1, 2, 2, 3, 3] and np.all(near[1:] != near[:-1])
+    for f, a, b in zip(played, edges[:-1], edges[1:]):
+        seg = tri[a:b]
+        assert seg[0] == 0 and np.abs(seg).max() <= 45.0
+        fr = np.fft.rfftfreq(len(seg), 1 / 1600)
+        assert abs(fr[np.argmax(np.abs(np.fft.rfft(seg)))] - f) <= fr[1] + 1e-9
+    # PRBS9: period 511, every non-zero 9-bit window once per period
+    bits = h9._lfsr_bits(1022 + 8, rng)
+    np.testing.assert_array_equal(bits[:511], bits[511:1022])
+    windows = {tuple(bits[k:k + 9]) for k in range(511)}
+    assert len(windows) == 511 and (0,) * 9 not in windows
+    # the amplifier's two lags: a step comes out monotone, without overshoot, and at one time
+    # constant at 1 - 2/e (two first-order lags in series: 1 - (1 + t/tau) e^(-t/tau))
+    st = h9._two_lags(np.r_[0.0, np.ones(3000)], 1e-5, 1e-3)
+    assert np.all(np.diff(st) >= 0) and st.max() <= 1.0
+    assert st[101] == pytest.approx(1 - 2 / np.e, abs=0.01)
+    # the unipolar triangle staircase stays in 0 ... 100 V and starts with the full stroke
+    ts, pts = h9._triangle_staircase(1 / 1100, rng)
+    assert ts.min() >= 0 and ts.max() == 100.0 and pts[1] == 100.0 and pts[0] == pts[-1] == 0
+    # random triangles: alternating extremes within +-40 V, at least 15 V apart
+    rt, ext = h9._random_triangles(1 / 1350, rng, -12.0, 30)
+    d = np.diff(ext)
+    assert rt[0] == -12.0 and np.all(np.abs(ext) <= 40.0) and np.all(np.abs(d) >= 15.0)
+    assert np.all(np.sign(d[1:]) == -np.sign(d[:-1]))
+
+    # -- the clean core: the play sum is a PI core (with play_core's density it is play_core),
+    # and the record is a gain, an offset and its core, to the noise --
+    v = 40 * np.sin(2 * np.pi * np.arange(3000) / 1000)
+    r_, w_ = me._density_thresholds(100.0, 200)
+    np.testing.assert_allclose(h9._plays(v, r_, 0.65 * w_ / w_.sum(), 0.35), me.play_core(v, 100.0), atol=1e-12)
+    for seed in (0, 1):
+        r = H["holdout9_clean_ring_down_bursts_640hz"](seed)
+        A = np.c_[h9._plays(r.v, r.extra["thresholds"], r.extra["weights"], r.extra["linear"]), np.ones(len(r.v))]
+        res = r.y - A @ np.linalg.lstsq(A, r.y, rcond=None)[0]
+        assert np.sqrt(np.mean(res ** 2)) < 1.3 * r.noise_std
+        # the gamma density has its hump away from 0 (play_core's density falls from r = 0)
+        w = r.extra["weights"]
+        assert 0 < np.argmax(w) < len(w) - 1 and w[0] < 0.5 * w.max()
+
+    # -- aging creep: the closed-form integral of 1 / tau(s) is the quadrature's; a held load's
+    # creep follows the ODE with tau(s) = tau0 (1 + gamma ln(1 + s / s0)) and settles at
+    # kappa h (1 + q |h| / h_ref), slower than an exponential of tau0 --
+    p = dict(tau0=0.3, gamma=2.5, s0=0.03)
+    for s in (0.01, 0.7, 6.0):
+        ref = quad(lambda u: 1 / (p["tau0"] * (1 + p["gamma"] * np.log1p(u / p["s0"]))), 0, s)[0]
+        assert h9._aging_integral(s, **p) == pytest.approx(ref, rel=1e-7)
+    dt = 5e-3
+    load = np.r_[0.0, np.full(1600, 2.0)]
+    c = h9._aging_creep(load, dt, kappa=0.07, q=0.5, h_ref=4.0, **p)
+    target = 0.07 * 2.0 * (1 + 0.5 * 2.0 / 4.0)
+    sol = solve_ivp(lambda s, x: (target - x) / (p["tau0"] * (1 + p["gamma"] * np.log1p(s / p["s0"]))),
+                    (0, 8.0), [0.0], t_eval=np.arange(1, 1600) * dt, rtol=1e-10, atol=1e-12)
+    np.testing.assert_allclose(c[2:], sol.y[0], rtol=0, atol=1e-6 * target)
+    assert 0.1 * target < target - c[-1] < 0.5 * target              # still creeping after 8 s
+    assert target - c[int(1 / dt) + 1] > 0.3 * target          # an exponential of tau0 leaves 4 %
+    long = h9._aging_creep(np.r_[0.0, np.full(200, 2.0), np.full(40_000, -3.0)], dt, 0.07, 0.5, 4.0, **p)
+    assert long[-1] == pytest.approx(0.07 * -3.0 * (1 + 0.5 * 3.0 / 4.0), rel=1e-3)
+    for seed in (0, 1):
+        r = H["holdout9_creep_aging_alternating_holds_200hz"](seed)
+        dt = r.t[1] - r.t[0]
+        h = me.play_core(r.v, 100.0)
+        keys = ("kappa", "q", "h_ref", "tau0", "gamma", "s0")
+        creep = h9._aging_creep(h, dt, **{k: r.extra[k] for k in keys})
+        assert np.sqrt(np.mean((r.y - h - creep) ** 2)) < 1.5 * r.noise_std
+        assert r.v.min() > -1 and r.v.max() <= 100.0
+        # the holds alternate between the low and the high half, and the output relaxes during
+        # each in the direction of the ramp before it
+        lv = r.extra["levels"][1:]
+        assert np.all(lv[::2] > 55) and np.all(lv[1::2] < 45)
+        edges = np.flatnonzero(np.diff(r.v) != 0) + 1
+        holds = [(a, b) for a, b in zip(np.r_[0, edges], np.r_[edges, len(r.v)]) if b - a > 100][1:]
+        moved = [np.sign(r.y[b - 10:b].mean() - r.y[a:a + 10].mean()) == np.sign(r.v[a] - r.v[a - 200])
+                 and abs(r.y[b - 10:b].mean() - r.y[a:a + 10].mean()) > 3 * r.noise_std for a, b in holds]
+        assert len(moved) == 14 and np.mean(moved) >= 0.75
+
+    # -- the relaxing Duhem core: without relaxation it is rate independent (the same samples at
+    # 1 Hz and 10 Hz give the same output); with it the major loop's width at a constant rate R
+    # is 2 (a - b) / (alpha + 1 / (tau R)) --
+    u = 60 * 2 / np.pi * np.arcsin(np.sin(2 * np.pi * np.arange(4000) / 1000))
+    np.testing.assert_allclose(h9._relaxing_duhem(u, 1e-3, 0.08, 1.0, 0.6, 1e12),
+                               h9._relaxing_duhem(u, 1e-4, 0.08, 1.0, 0.6, 1e12), atol=1e-8)
+    big = 200 * 2 / np.pi * np.arcsin(np.sin(2 * np.pi * np.arange(6000) / 2000))   # +-200 V: branches settle
+    for f in (0.5, 5.0):
+        zf = h9._relaxing_duhem(big, 1 / (2000 * f), 0.08, 1.0, 0.6, 0.1)
+        assert abs(big[4000]) < 1e-9 and abs(big[5000]) < 1e-9          # 0 V rising, then falling
+        assert zf[5000] - zf[4000] == pytest.approx(2 * 0.4 / (0.08 + 1 / (0.1 * 4 * 200 * f)), rel=1e-3)
+    for seed in (0, 1, 2):
+        r = H["holdout9_rate_relaxing_duhem_shuffled_triangles"](seed)
+        dt = r.t[1] - r.t[0]
+        drive = r.extra["drive"]
+        model = r.extra["gain"] * h9._relaxing_duhem(drive, dt, *(r.extra[k] for k in ("alpha", "a", "b", "tau_r")))
+        assert np.sqrt(np.mean((r.y - model) ** 2)) < 1.5 * r.noise_std
+        # the loop's width at 0 V (second half of each segment) grows with the frequency
+        freqs, edges = r.extra["freqs"], r.extra["segments"]
+        width = {}
+        for f, a, b in zip(freqs, edges[:-1], edges[1:]):
+            half = slice(a + (b - a) // 2, b)
+            width.setdefault(round(f, 6), []).append(_spread_at(drive[half], model[half], 0.0, 2.0))
+        ws = [np.mean(width[f]) for f in sorted(width)]
+        assert len(ws) == 4 and np.all(np.diff(ws) > 0) and ws[-1] > 1.5 * ws[0]
+
+    # -- warm-up and an ambient step: the output is the core plus the stated offset; before the
+    # step the offset is the warm-up alone, after it departs from the warm-up's course by
+    # a_step (1 - exp(-(t - t_step) / tau_step)), many noise widths, without a jump --
+    for seed in (0, 1):
+        r = H["holdout9_drift_warmup_ambient_step_random"](seed)
+        e = r.extra
+        off = e["offset"]
+        assert np.sqrt(np.mean((r.y - me.play_core(r.v, 100.0) - off) ** 2)) < 1.5 * r.noise_std
+        warm = e["a_warm"] * (1 - np.exp(-r.t / e["tau_warm"]))
+        before, after = r.t < e["t_step"], r.t >= e["t_step"] + e["tau_step"]
+        np.testing.assert_allclose(off[before], warm[before], atol=1e-12)
+        dep = (off - warm)[after]
+        assert np.all(np.abs(dep) >= (1 - np.exp(-1)) * abs(e["a_step"]) - 1e-12)
+        assert np.all(np.abs(dep) <= abs(e["a_step"])) and np.sign(dep[-1]) == np.sign(e["a_step"])
+        assert abs(e["a_step"]) > 10 * r.noise_std and abs(warm[before][-1]) > 10 * r.noise_std
+        assert np.abs(np.diff(off)).max() < r.noise_std
+        assert 1.5 <= e["tau_step"] <= 3.5 and 0.35 * r.t[-1] < e["t_step"] < 0.65 * r.t[-1]
+
+    # -- the V-shaped gain: the output over the core, burst by burst, falls linearly to its
+    # lowest near the stated time and rises after it --
+    for seed in (0, 1, 2):
+        r = H["holdout9_gain_drift_v_shape_sine_bursts"](seed)
+        core = me.play_core(r.v, 100.0)
+        idx = np.flatnonzero(np.abs(core) > 0.5 * np.abs(core).max())
+        bursts = np.split(idx, np.flatnonzero(np.diff(idx) > 200) + 1)
+        ratio = np.array([np.mean(r.y[b] / core[b]) for b in bursts])
+        t_b = np.array([r.t[b].mean() for b in bursts])
+        assert len(bursts) == 12
+        np.testing.assert_allclose(ratio, [r.extra["gain"][b].mean() for b in bursts], atol=1e-3)
+        low = np.argmin(ratio)
+        assert abs(t_b[low] - r.extra["t_low"]) < 0.15 * r.t[-1]
+        assert np.all(np.diff(ratio[:low + 1]) < 0) and np.all(np.diff(ratio[low:]) > 0)
+        assert min(ratio[0], ratio[-1]) - ratio[low] > 0.02 and 0.03 <= r.extra["depth"] <= 0.08
+        # straight lines either side: a line through the falling bursts fits to 1e-3
+        if low >= 3:
+            fit = np.polyval(np.polyfit(t_b[:low], ratio[:low], 1), t_b[:low])
+            assert np.abs(fit - ratio[:low]).max() < 1e-3
+
+    # -- generalized plays: with both envelopes the identity they are a PI core; the record's
+    # loop is not point-symmetric (a PI's major loop is: y_up(v) + y_down(100 - v) is constant) --
+    uni = np.concatenate([np.linspace(0, 100, 1001)[:-1], np.linspace(100, 0, 1001)[:-1]] * 2 + [[0.0]])
+    r_, w_ = me._density_thresholds(100.0, 150)
+    w_ = 0.65 * w_ / w_.sum()
+
+    def ident(x):
+        return x
+
+    np.testing.assert_allclose(h9._generalized_plays(uni, r_, w_, 0.35, ident, ident), h9._plays(uni, r_, w_, 0.35),
+                               atol=1e-12)
+    for seed in (0, 1, 2):
+        r = H["holdout9_asymmetry_generalized_plays_unipolar_staircase"](seed)
+        q = r.extra["q"]
+
+        def up(x):
+            return (1 - q) * x + q * x ** 2 / 100.0
+
+        args = (r.extra["thresholds"], r.extra["weights"], r.extra["linear"])
+        assert np.sqrt(np.mean((r.y - h9._generalized_plays(r.v, *args, up, ident)) ** 2)) < 1.5 * r.noise_std
+        assert r.v.min() > -1 and r.v.max() > 99
+        for env, lo, hi in ((up, 0.03, 1.0), (ident, 0.0, 1e-9)):
+            y = h9._generalized_plays(uni, *args, env, ident)
+            dev = y[2000:3001] + y[3000:4001] - (y[2000] + y[3000])
+            assert lo * np.ptp(y) <= np.abs(dev).max() <= hi * np.ptp(y)
+
+    # -- the Langevin flux: the record is mu v + J_s L(h / a); near the extremes the slope along
+    # the rising branch falls to under 0.6 of the core's slope ratio (the core's grows there),
+    # but stays above mu (a saturating magnetisation beside a linear part, not a clip) --
+    for seed in (0, 1):
+        r = H["holdout9_saturation_langevin_flux_growing_sine"](seed)
+        h = me.play_core(r.v, 100.0)
+        law = h9._langevin_flux(h, r.v, r.extra["a"], r.extra["j_s"], r.extra["mu"])
+        assert np.sqrt(np.mean((r.y - law) ** 2)) < 1.5 * r.noise_std
+        last = slice(int(0.85 * len(r.v)), None)
+        vv, yy, hh = r.v[last], r.y[last], h[last]
+        rising = np.gradient(vv) > 0
+        top = np.abs(vv).max()
+
+        def slope(y, lo, hi):
+            m = rising & (vv > lo * top) & (vv < hi * top)
+            return np.polyfit(vv[m], y[m], 1)[0]
+
+        ratio_y = slope(yy, 0.85, 1.0) / slope(yy, -0.15, 0.15)
+        ratio_h = slope(hh, 0.85, 1.0) / slope(hh, -0.15, 0.15)
+        assert ratio_h > 1.1 and ratio_y < 0.6 * ratio_h and slope(yy, 0.85, 1.0) > r.extra["mu"]
+        # the amplitude grows geometrically: the first second's peak about 12 % of the last's
+        per = int(1 / (r.t[1] - r.t[0]))
+        assert 0.09 < np.abs(r.v[:per]).max() / np.abs(r.v[-per:]).max() < 0.16
+
+    for seed in (0, 1):
+        # -- the acquisition latency: the output lags the undelayed core by the stated quarter
+        # samples; the drive is a smoothed binary-like staircase (its levels' signs alternate
+        # by runs, and it holds) --
+        r = H["holdout9_delay_acquisition_latency_prbs_2khz"](seed)
+        d = r.extra["delay_samples"]
+        assert 2.5 <= d <= 6.0 and d * 4 == int(d * 4)
+        lag = _lag_samples(r.y, me.play_core(r.v, 100.0))
+        assert abs(lag - d) < 0.1, (lag, d)
+        assert np.mean(np.abs(np.diff(r.v)) < 0.1) > 0.5 and np.mean(r.v > 5) > 0.3 and np.mean(r.v < -5) > 0.3
+
+        # -- preload and drift: the record is the preloaded core plus a straight offset; the
+        # preload (one excursion beyond 52 V and back to a level of the other sign) leaves the
+        # core many noise widths from the virgin one at the start --
+        r = H["holdout9_pair_initial_state_drift_random_triangles"](seed)
+        pre, off = r.extra["preload"], r.extra["offset"]
+        assert np.abs(pre).max() >= 52 and 5 <= abs(pre[-1]) <= 20
+        assert np.sign(pre[-1]) == -np.sign(pre[np.argmax(np.abs(pre))]) and abs(r.v[0] - pre[-1]) < 0.5
+        _, z = me.play_core(pre, 100.0, return_state=True)
+        pre_y = me.play_core(r.v, 100.0, state=z)
+        virgin = me.play_core(r.v, 100.0)
+        assert np.sqrt(np.mean((r.y - pre_y - off) ** 2)) < 1.5 * r.noise_std
+        assert np.abs(pre_y - virgin)[:1000].max() > 20 * r.noise_std
+        np.testing.assert_allclose(np.diff(off, 2), 0, atol=1e-12)
+        assert off[0] == 0 and np.ptp(off) > 15 * r.noise_std
+
+    # -- the preload-modulated plays: depth 0 is a PI core; in the record the loop's width at
+    # 0 V follows the preload while the span of a full-amplitude cycle moves against it --
+    r_, w_ = me._density_thresholds(100.0, 150, r_max_fraction=0.35)
+    w_ = 0.65 * w_ / w_.sum()
+    y0, _ = h9._preload_modulated_plays(v, np.arange(len(v)) * 1e-3, r_, w_, 0.35, 0.0, 10.0, 0.3)
+    np.testing.assert_allclose(y0, h9._plays(v, r_, w_, 0.35), atol=1e-12)
+    for seed in (0, 1, 2):
+        r = H["holdout9_oov_preload_modulated_width_keyed_sine"](seed)
+        per = int(round(1 / r.extra["freq"] / (r.t[1] - r.t[0])))
+        F = r.extra["preload"]
+        width, span, load = [], [], []
+        for k in range(0, len(r.v) - per, per):
+            cyc = slice(k, k + per)
+            if np.abs(r.v[cyc]).max() > 40:
+                width.append(_spread_at(r.v[cyc], r.y[cyc], 0.0, 5.0))
+                span.append(np.ptp(r.y[cyc]))
+                load.append(F[cyc].mean())
+        assert len(width) >= 12 and np.ptp(load) > 1.5
+        assert np.corrcoef(width, load)[0, 1] > 0.85 and np.corrcoef(span, load)[0, 1] < -0.9
+        assert max(width) > 1.3 * min(width) and max(span) - min(span) > 20 * r.noise_std
 
 
 def test_holdout5_mechanisms_follow_their_laws():

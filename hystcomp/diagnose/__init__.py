@@ -35,6 +35,9 @@ refitted jointly (warm-started).  The verdict is ``"explained"`` only when
 the final held-out RMS is within 1.5 noise floors and no signature test
 fires on the final residual; otherwise ``"unexplained"``, with what
 remains (in time, against input, against rate, at the record's start).
+A record the held-out end leaves unexplained with no drift named is
+re-judged on blocks held out between fitted stretches (a drift that turns
+cannot be extrapolated into the end; ``held_out`` of :func:`diagnose`).
 
 Without a time axis (``t=None``: a quasi-static point sequence such as a
 B-H loop) rate dependence, creep, drift, gain drift and delay are reported
@@ -44,7 +47,7 @@ untestable, never named.
 import numpy as np
 
 from .cli import add_arguments, load_csv, main, run
-from .record import find_holds
+from .record import HELD_OUT, find_holds
 from .report import SCHEMA_VERSION, Diagnosis
 from .search import EFFECTS, EXPLAINED, MIN_GAIN, run_search
 
@@ -97,14 +100,21 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         record without a time axis.
     input, output : str
         With a DataFrame: the input and measured-output columns.
-    held_out : {"auto", "last"}
-        Which part is held out: ``"last"`` the record's end; ``"auto"``
-        (default) the end, unless its input leaves the rest's range by more
-        than 5 % of the span (a record whose amplitude grows to the end):
-        then a block of the same length inside the record whose input stays
-        within the rest's range (see
+    held_out : {"auto", "last", "blocks"}
+        Which part is held out: ``"last"`` the record's end; ``"blocks"``
+        five blocks spread over the record after its first 30 % (see
+        :func:`hystcomp.diagnose.record.spread_blocks`): a drift or gain
+        drift of no set shape is then judged by interpolation between
+        fitted stretches; ``"auto"`` (default) the end, unless its input
+        leaves the rest's range by more than 5 % of the span (a record whose
+        amplitude grows to the end): then a block of the same length inside
+        the record whose input stays within the rest's range (see
         :func:`hystcomp.diagnose.record.inner_block`; the report says so and
-        :attr:`Diagnosis.validation` gives where).
+        :attr:`Diagnosis.validation` gives where).  When that leaves the
+        record unexplained with no drift or gain drift named, ``"auto"``
+        re-judges it on blocks and reports the blocks' diagnosis if it
+        names a drift or gain drift and leaves fewer noise floors
+        (:attr:`Diagnosis.other_split` has the other split's verdict).
 
     Returns
     -------
@@ -150,7 +160,7 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         thresholds = base.thresholds
     elif not (isinstance(base, str) and base == "pi"):
         raise ValueError(f"Parameter base is {base!r} but should be 'pi' or a PI model")
-    check_choice(held_out, "held_out", ("auto", "last"))
+    check_choice(held_out, "held_out", HELD_OUT)
     n_thresholds = int(n_thresholds)
     if n_thresholds < 2:
         raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
@@ -186,8 +196,9 @@ def evidence(t, v, y, model=None, validation=0.3, held_out="auto"):
         default the base PI model.
     validation : float
         Fraction held out (not used to fit the default model).
-    held_out : {"auto", "last"}
-        Which part is held out, as in :func:`diagnose`.
+    held_out : {"auto", "last", "blocks"}
+        Which part is held out, as in :func:`diagnose` (``"auto"`` without
+        the re-judging on blocks).
 
     Returns
     -------

@@ -21,7 +21,34 @@ BEYOND = 0.05
 BLOCK_STEP = 0.05
 BLOCK_FIRST = 0.3
 
-HELD_OUT = ("auto", "last")
+#: ``held_out="blocks"``: the held-out share in this many blocks spread over
+#: the record after :data:`BLOCK_FIRST` of it (see :func:`spread_blocks`)
+N_BLOCKS = 5
+
+HELD_OUT = ("auto", "last", "blocks")
+
+
+def spread_blocks(n, length, m=N_BLOCKS):
+    """`m` held-out blocks, `length` samples in all, spread over a record of
+    `n` samples after :data:`BLOCK_FIRST` of it, with fitted stretches of
+    equal length between them and after the last: a time function of no set
+    shape (a thermal drift) is then judged by interpolation, not by
+    extrapolation into the record's end.
+
+    Returns
+    -------
+    list of (int, int)
+        Each block's first sample and the sample after its last.
+
+    Examples
+    --------
+    >>> spread_blocks(1000, 300, 3)
+    [(300, 400), (533, 633), (767, 867)]
+    """
+    first = int(round(BLOCK_FIRST * n))
+    L = length // m
+    g = (n - first - m * L) / m
+    return [(int(round(first + i * (L + g))), int(round(first + i * (L + g))) + L) for i in range(m)]
 
 
 def caution(beyond, short=False):
@@ -101,8 +128,10 @@ class Record:
     end drives the input more than :data:`BEYOND` of the span beyond the
     rest's range (a record whose amplitude grows); then the block of the
     same length inside the record chosen by :func:`inner_block` (when it
-    leaves the range less than half as far as the end does).  The held-out
-    samples are ``held_start ... held_end - 1``.
+    leaves the range less than half as far as the end does).  With
+    ``held_out="blocks"``, :data:`N_BLOCKS` blocks spread over the record
+    (:func:`spread_blocks`).  The held-out samples are those of
+    :attr:`blocks`, all within ``held_start ... held_end - 1``.
     """
 
     def __init__(self, t, v, y, validation, held_out="auto"):
@@ -149,15 +178,22 @@ class Record:
         self.held_start, self.held_end = self.k_val, n
         #: how far the end block would have left the range when the block was moved (else 0)
         self.held_moved_from_end = 0.0
-        if held_out == "auto":
+        #: the held-out blocks, (first sample, sample after the last) each
+        self.blocks = [(self.k_val, n)]
+        if held_out == "blocks":
+            self.blocks = spread_blocks(n, n - self.k_val)
+            self.held_start, self.held_end = self.blocks[0][0], self.blocks[-1][1]
+        elif held_out == "auto":
             end = _beyond_range(self.v, self.k_val, n, self.span)
             if end > BEYOND:
                 a = inner_block(self.v, n - self.k_val, self.span)
                 if a is not None and _beyond_range(self.v, a, a + n - self.k_val, self.span) < 0.5 * end:
                     self.held_start, self.held_end = a, a + n - self.k_val
                     self.held_moved_from_end = end
+                    self.blocks = [(a, a + n - self.k_val)]
         self.train = np.ones(n, bool)
-        self.train[self.held_start:self.held_end] = False
+        for a, b in self.blocks:
+            self.train[a:b] = False
         self.y_span = float(np.ptp(self.y))
         if self.y_span <= 0:
             raise ValueError(f"Parameter y is constant ({self.y[0]}); there is no response to diagnose")
@@ -196,26 +232,41 @@ class Record:
         """How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0 when it stays inside): there the plays
         whose thresholds the fitted part never reached are extrapolated."""
-        return _beyond_range(self.v, self.held_start, self.held_end, self.span)
+        if len(self.blocks) == 1:
+            return _beyond_range(self.v, self.held_start, self.held_end, self.span)
+        vh, rest = self.v[~self.train], self.v[self.train]
+        return (max(float(vh.max() - rest.max()), 0.0) + max(float(rest.min() - vh.min()), 0.0)) / self.span
 
     @property
     def held_out_in_middle(self):
         """Whether the held-out block lies inside the record (not at its end)."""
         return self.held_end < self.n
 
+    def _at(self, k):
+        return float(self.t[k]) if self.t is not None else k
+
     def held_interval(self):
-        """The held-out block's first and last sample, in seconds (or sample
+        """The held-out part's first and last sample, in seconds (or sample
+        indices without a time axis); with several blocks, the first block's
+        first and the last block's last sample (see :meth:`held_blocks`)."""
+        return self._at(self.held_start), self._at(self.held_end - 1)
+
+    def held_blocks(self):
+        """Each held-out block's first and last sample, in seconds (or sample
         indices without a time axis)."""
-        a, b = self.held_start, self.held_end - 1
-        return (float(self.t[a]), float(self.t[b])) if self.t is not None else (a, b)
+        return [(self._at(a), self._at(b - 1)) for a, b in self.blocks]
 
     def held_out_line(self):
-        """The report's line on a block held out inside the record ("" when
+        """The report's line on a part held out inside the record ("" when
         the end is held out)."""
         if not self.held_out_in_middle:
             return ""
-        a, b = self.held_interval()
         unit = " s" if self.t is not None else " (sample index)"
+        if len(self.blocks) > 1:
+            where = ", ".join(f"{a:.4g} ... {b:.4g}" for a, b in self.held_blocks())
+            return (f"held out: {len(self.blocks)} blocks spread over the record, {where}{unit} (a time "
+                    "effect of no set shape is judged by interpolation between fitted stretches)")
+        a, b = self.held_interval()
         return (f"held out: {a:g} ... {b:g}{unit} inside the record, not its end (the end drives the input "
                 f"{100 * self.held_moved_from_end:.0f} % of its span beyond the rest's range)")
 

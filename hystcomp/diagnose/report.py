@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 6
+SCHEMA_VERSION = 7
 
 
 def _jsonable(x):
@@ -77,10 +77,11 @@ def reversals(v, tol):
 
 
 def _mark_held_out(ax, xax, rec):
-    """Dashed lines at the held-out block's start (and end, inside the record)."""
-    ax.axvline(xax[rec.held_start], color="k", ls="--", lw=0.8)
-    if rec.held_end < rec.n:
-        ax.axvline(xax[rec.held_end - 1], color="k", ls="--", lw=0.8)
+    """Dashed lines at each held-out block's start (and end, inside the record)."""
+    for a, b in rec.blocks:
+        ax.axvline(xax[a], color="k", ls="--", lw=0.8)
+        if b < rec.n:
+            ax.axvline(xax[b - 1], color="k", ls="--", lw=0.8)
 
 
 def _ordinal(n):
@@ -139,8 +140,18 @@ class Diagnosis:
     remaining : dict
         What structure remains when unexplained (key -> where and how much).
     validation : (float, float)
-        The held-out block's first and last sample, in seconds (sample
+        The held-out part's first and last sample, in seconds (sample
         indices without a time axis).
+    held_out_blocks : list of (float, float)
+        Each held-out block's first and last sample (one block unless
+        ``held_out="blocks"`` or ``"auto"`` took the blocks' diagnosis).
+    other_split : dict or None
+        With ``held_out="auto"``, when the end left the record unexplained
+        with no drift or gain drift named and the record was re-judged on
+        blocks spread over it: the verdict of the split not reported
+        (``held_out``, ``validation``, ``verdict``, ``effects``,
+        ``tentative``, ``rms_heldout``, ``noise_floor``,
+        ``noise_floors_left``) and ``why`` the reported one was taken.
     held_out_beyond_fitted_range : float
         How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0: inside it).  Above 0.05 the report
@@ -174,6 +185,8 @@ class Diagnosis:
 
     held_out_beyond_fitted_range = 0.0
     held_out_moved = 0.0
+    other_split = None
+    held_out_blocks = ()
 
     def __init__(self, **kw):
         self.__dict__.update(kw)
@@ -192,8 +205,9 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 6; 5
-        added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``).
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 7; 5
+        added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
+        ``held_out_blocks`` and ``other_split``).
 
         Returns
         -------
@@ -212,7 +226,8 @@ class Diagnosis:
             "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
-            "validation": list(self.validation),
+            "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
+            "other_split": self.other_split,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
@@ -259,8 +274,13 @@ class Diagnosis:
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
-        if self.held_out_moved > 0:
+        if self.held_out_moved > 0 or len(self.held_out_blocks) > 1:
             lines.append("  " + self._rec.held_out_line())
+        if self.other_split is not None:
+            o = self.other_split
+            lines.append(f"  other split ({o['held_out']} held out): {o['verdict']}, effects "
+                         f"{', '.join(o['effects']) or 'none'}, {o['noise_floors_left']:.2f} noise floors left; "
+                         + ("this diagnosis is taken: " + o["why"] if o["held_out"] != "blocks" else o["why"]))
         if self.held_out_beyond_fitted_range > BEYOND:
             lines.append("  caution: " + caution(self.held_out_beyond_fitted_range))
         tent = self.tentative

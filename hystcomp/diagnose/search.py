@@ -8,7 +8,7 @@ import numpy as np
 from ..identify.parts import PARTS, Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import PartsModel, Structure, VariableProjection
-from .record import BEYOND, Record, caution, noise_floor
+from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
 from .signatures import evidence as _evidence
 
 #: the canonical effect names, in the order the candidates are tried
@@ -75,19 +75,86 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
     bar = progress_bar(desc="diagnose", enabled=progress, unit="fit")
     try:
         if bar.disable:
-            return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
-                           lambda s: None, lambda desc: None, held_out)
+            def say(s):
+                pass
 
-        def say(s):
-            bar.write("diagnose: " + s, file=sys.stderr)
+            def tick(desc):
+                pass
+        else:
+            def say(s):
+                bar.write("diagnose: " + s, file=sys.stderr)
 
-        def tick(desc):
-            bar.set_description_str(desc, refresh=False)
-            bar.update(1)
+            def tick(desc):
+                bar.set_description_str(desc, refresh=False)
+                bar.update(1)
 
-        return _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out)
+        args = (t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick)
+        kw = _search(*args, held_out)
+        if held_out == "auto" and _blocks_may_tell(kw, effects):
+            say(f"the held-out end leaves the record unexplained with no {' or '.join(INTERPOLATED)} named; "
+                f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
+            other = _search(*args, "blocks")
+            return _choose_split(kw, other, say)
+        return kw
     finally:
         bar.close()
+
+
+#: effects of no set shape in time (broken lines in time, held at their last
+#: level past the fitted part): a held-out end tests them by extrapolation,
+#: which a drift that turns (a thermal cycle) fails; blocks held out between
+#: fitted stretches test them by interpolation
+INTERPOLATED = ("drift", "gain_drift")
+
+
+def _blocks_may_tell(kw, effects):
+    """Whether a search with the end (or one inner block) held out should be
+    re-judged on blocks spread over the record: its verdict is
+    unexplained, the record has a time axis, and a drift or gain drift was
+    a candidate, testable, and not named."""
+    rec = kw["_rec"]
+    return (kw["verdict"] == "unexplained" and rec.dt is not None
+            and any(e in effects and e not in kw["untested"] for e in INTERPOLATED)
+            and not set(kw["effects"]) & set(INTERPOLATED))
+
+
+def _pass_summary(kw):
+    """A search's verdict in brief, for the report of the other split."""
+    rec = kw["_rec"]
+    return {"held_out": "blocks" if len(rec.blocks) > 1 else ("inner" if rec.held_out_in_middle else "end"),
+            "validation": [list(b) for b in rec.held_blocks()], "verdict": kw["verdict"],
+            "effects": list(kw["effects"]), "tentative": list(kw["tentative"]),
+            "rms_heldout": kw["rms_heldout"], "noise_floor": kw["noise_floor"],
+            "noise_floors_left": kw["rms_heldout"] / kw["noise_floor"]}
+
+
+def _choose_split(end, blocks, say):
+    """The diagnosis of the two splits to report: the blocks' when they name a
+    drift or gain drift (which the end's did not) and leave fewer noise
+    floors; the end's otherwise.  The other is summarised under
+    ``other_split``, with why it was not taken or why it was."""
+    left_end = end["rms_heldout"] / end["noise_floor"]
+    left_blocks = blocks["rms_heldout"] / blocks["noise_floor"]
+    named = [e for e in blocks["effects"] if e in INTERPOLATED]
+    take = bool(named) and left_blocks < left_end
+    chosen, other = (blocks, end) if take else (end, blocks)
+    summary = _pass_summary(other)
+    if take:
+        summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors and no "
+                          f"{' or '.join(INTERPOLATED)} was named; with blocks spread over the record "
+                          f"{', '.join(named)} is named and {left_blocks:.2f} noise floors are left: a time "
+                          "effect of no set shape is judged by interpolation, not by extrapolation into the end")
+    else:
+        summary["why"] = ("not taken: with blocks spread over the record "
+                          + (f"{', '.join(named)} is named but {left_blocks:.2f} noise floors are left against "
+                             f"{left_end:.2f} with the end held out" if named else
+                             f"no {' or '.join(INTERPOLATED)} is named either ({left_blocks:.2f} noise floors left)"))
+    say(("taken: " if take else "") + summary["why"])
+    chosen = dict(chosen)
+    chosen["other_split"] = summary
+    chosen["elapsed"] = end["elapsed"] + blocks["elapsed"]
+    chosen["n_evaluations"] = end["n_evaluations"] + blocks["n_evaluations"]
+    return chosen
 
 
 def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto"):
@@ -332,10 +399,18 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     rho = float(e[1:] @ e[:-1] / (e @ e)) if float(e @ e) > 0 else 0.0
     noise_info["lag1_autocorrelation"] = round(rho, 4)
     if noise_info["method"] == "high_frequency" and rho > WHITE:
-        remaining["correlated_residual"] = (
-            f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "
-            f"{WHITE}), so the noise floor from its high-frequency part is not reliable (coloured noise or "
-            "fast structure the model misses; holds in the record would tell)")
+        head = (f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "
+                f"{WHITE})")
+        if "holds" in noise_info:
+            # the holds' scatter is at most the high-frequency floor: the floor stands,
+            # the correlation is structure the model misses
+            remaining["correlated_residual"] = (
+                head + f": structure the model misses (the output's scatter during the holds, "
+                f"{noise_info['holds']:.3g}, confirms the noise floor {sigma:.3g})")
+        else:
+            remaining["correlated_residual"] = (
+                head + ", so the noise floor from its high-frequency part is not reliable (coloured noise or "
+                "fast structure the model misses; holds in the record would tell)")
     # most of the misfit outside the vocabulary: when the best model leaves more
     # than OOV_FLOOR noise floors and its extensions removed less than
     # NAMED_SHARE of the base model's misfit above the noise, or it leaves more
@@ -378,7 +453,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
-                validation=rec.held_interval(), held_out_beyond_fitted_range=beyond,
+                validation=rec.held_interval(), held_out_blocks=rec.held_blocks(),
+                held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
@@ -428,7 +504,7 @@ def base_context(rec, n_thresholds=20, thresholds=None):
     if rec.dt is None:
         fit_end = held = None
     elif rec.held_out_in_middle:
-        fit_end, held = None, (rec.held_start * rec.dt, rec.held_end * rec.dt)
+        fit_end, held = None, [(a * rec.dt, b * rec.dt) for a, b in rec.blocks]
     else:
         fit_end, held = rec.held_start * rec.dt, None
     ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds, fit_end=fit_end,

@@ -49,11 +49,12 @@ class Context:
         diagnosis holds out the rest); default `duration`.  Parts whose
         time functions must be extrapolated beyond it (:class:`SlowDrift`)
         place their knots before it.
-    held_out : (float, float) or None
-        Start and end time [s] of a held-out block inside the record (the
-        diagnosis holds out a block in the middle when the record's end
-        leaves the input range of the rest): the samples ``start <= t < end``
-        are not fitted, and parts with knots in time place none inside it.
+    held_out : (float, float), sequence of them, or None
+        Start and end time [s] of a held-out block inside the record, or of
+        several (the diagnosis holds out a block in the middle when the
+        record's end leaves the input range of the rest, or blocks spread
+        over the record): the samples ``start <= t < end`` are not fitted,
+        and parts with knots in time place none inside a block.
 
     Examples
     --------
@@ -75,7 +76,7 @@ class Context:
         self.noise = float(noise)
         self.time = None if self.dt is None else np.arange(self.n) * self.dt
         self.fit_end = self.duration if fit_end is None else float(fit_end)
-        self.held_out = None if held_out is None else (float(held_out[0]), float(held_out[1]))
+        self.held_out = _blocks(held_out)
         #: memo of the core's play columns (see :class:`~hystcomp.identify.search.VariableProjection`)
         self.core_cache = OrderedDict()
 
@@ -94,12 +95,13 @@ class Context:
         >>> ctx = Context(np.zeros(6), 1.0, 0.0, 1.0, 6.0, held_out=(2.0, 4.0))
         >>> ctx.fitted_times().tolist()
         [True, True, False, False, True, True]
+        >>> Context(np.zeros(6), 1.0, 0.0, 1.0, 6.0, held_out=[(1.0, 2.0), (4.0, 5.0)]).fitted_times().tolist()
+        [True, False, True, True, False, True]
         """
         if self.time is None:
             return None
         fit = self.time <= self.fitted_until
-        if self.held_out is not None:
-            a, b = self.held_out
+        for a, b in self.held_out or ():
             fit &= ~((self.time >= a - 1e-9 * self.dt) & (self.time < b - 1e-9 * self.dt))
         return fit
 
@@ -119,6 +121,16 @@ class Context:
                       self.fit_end, self.held_out)
         ctx.thresholds = self.thresholds.copy()      # set thresholds carry over (diagnose sets its own)
         return ctx
+
+
+def _blocks(held_out):
+    """Held-out blocks as a tuple of (start, end) pairs in time order, or
+    None: `held_out` is None, one (start, end) pair or a sequence of them."""
+    if held_out is None or len(held_out) == 0:
+        return None
+    if np.ndim(held_out) == 1:
+        held_out = [held_out]
+    return tuple(sorted((float(a), float(b)) for a, b in held_out))
 
 
 class Part:

@@ -213,20 +213,30 @@ class GainDrift(Part):
 
 def _knot_times(ctx, k):
     """The `k` + 1 knots (from ``t = 0``) of a broken line in time over the
-    fitted part of the record when a block inside it is held out
-    (``ctx.held_out``): in equal shares of the fitted time, none inside the
-    block (the line crosses the block straight).
+    fitted part of the record when blocks inside it are held out
+    (``ctx.held_out``): in equal shares of the fitted time, none inside a
+    block (the line crosses each block straight).
 
     Examples
     --------
     >>> ctx = Context(np.zeros(10), 1.0, 0.0, 1.0, 10.0, held_out=(4.0, 6.0))
     >>> _knot_times(ctx, 4).tolist()
     [0.0, 2.0, 6.0, 8.0, 10.0]
+
+    Two blocks, 2 s and 1 s: 9 s fitted, a knot every 3 s of fitted time
+
+    >>> ctx = Context(np.zeros(12), 1.0, 0.0, 1.0, 12.0, held_out=[(2.0, 4.0), (7.0, 8.0)])
+    >>> _knot_times(ctx, 3).tolist()
+    [0.0, 5.0, 9.0, 12.0]
     """
-    a, b = ctx.held_out
     T = ctx.fitted_until
-    F = np.linspace(0.0, T - (b - a), k + 1)          # knots in fitted time
-    return np.where(F < a, F, F + (b - a))
+    blocks = ctx.held_out
+    F = np.linspace(0.0, T - sum(b - a for a, b in blocks), k + 1)     # knots in fitted time
+    out, skipped = F.copy(), 0.0
+    for a, b in blocks:
+        out[F >= a - skipped] += b - a            # knots at or after the block's start (fitted time)
+        skipped += b - a
+    return out
 
 
 def _time_hats(ctx, k):

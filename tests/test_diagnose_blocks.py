@@ -1,0 +1,90 @@
+"""Held-out blocks spread over the record (``held_out="blocks"``) and the
+re-judging of ``held_out="auto"``: a drift that turns back cannot be tested by
+extrapolation into the record's end; between fitted stretches it can."""
+
+import numpy as np
+import pytest
+from realistic import excitations as ex
+from realistic import mechanisms as me
+
+from hystcomp.diagnose import diagnose
+from hystcomp.diagnose.record import N_BLOCKS, Record, spread_blocks
+
+
+def _warm_up_and_cool_down(seed=0):
+    """A PI-like core (200 plays of a decaying density, not hystcomp's parts)
+    under triangles of decaying amplitude, 30 s at 500 Hz, with a mount that
+    warms and cools: an offset of 4 % of the span rising over the first 65 %
+    of the record and falling back after it (sin^2), and output noise of
+    0.2 % of the span."""
+    rng = np.random.default_rng([seed, 4417])
+    dt, n = 2e-3, 15_000
+    v = ex.triangles(dt, n, 0.8, 45.0)
+    t = np.arange(n) * dt
+    h = me.play_core(v, 100.0)
+    off = 0.04 * np.ptp(h) * np.sin(np.pi * t / (1.3 * t[-1])) ** 2
+    return t, v, h + off + 0.002 * np.ptp(h) * rng.standard_normal(n)
+
+
+def test_blocks_share_the_held_out_fraction_after_the_records_first_part():
+    for n in (70, 1001, 40_000):
+        k = int(round(0.7 * n))
+        blocks = spread_blocks(n, n - k)
+        assert len(blocks) == N_BLOCKS
+        starts, ends = np.array(blocks).T
+        assert starts[0] == int(round(0.3 * n)) and ends[-1] < n           # fitted stretch after the last
+        assert np.all(ends - starts == (n - k) // N_BLOCKS)
+        assert np.all(starts[1:] > ends[:-1])                              # fitted stretches between
+    rec = Record(np.arange(1000) * 0.01, np.sin(np.arange(1000) / 10), np.cos(np.arange(1000) / 10), 0.3,
+                 "blocks")
+    assert (~rec.train).sum() == 300 and rec.held_out_in_middle
+    assert "5 blocks spread over the record" in rec.held_out_line()
+    with pytest.raises(ValueError, match="held_out.*'middle'.*'blocks'"):
+        Record(None, np.sin(np.arange(100)), np.cos(np.arange(100)), 0.3, "middle")
+
+
+def test_a_drift_that_turns_back_is_named_on_blocks_spread_over_the_record():
+    t, v, y = _warm_up_and_cool_down()
+    # the end held out: the broken line of the shapeless drift is held at its last
+    # level past the fitted part, while the offset falls back; nothing pays there
+    last = diagnose(t, v, y, progress=False, held_out="last")
+    assert last.effects == [] and last.verdict == "unexplained", last.report()
+    assert last.other_split is None
+    # auto: the same end first, then the record re-judged on blocks, taken because
+    # drift is named there and fewer noise floors are left (1.05 against 4.2 measured)
+    rep = diagnose(t, v, y, progress=False)
+    assert rep.effects == ["drift"] and rep.verdict == "explained", rep.report()
+    o = rep.other_split
+    assert o["held_out"] == "end" and o["effects"] == [] and o["verdict"] == "unexplained"
+    assert o["noise_floors_left"] == pytest.approx(last.rms_heldout / last.noise_floor, rel=1e-9)
+    assert rep.rms_heldout / rep.noise_floor < 1.5 < o["noise_floors_left"]
+    assert len(rep.held_out_blocks) == N_BLOCKS and rep.validation[0] == rep.held_out_blocks[0][0]
+    # the model reproduces the reported RMS on the blocks' samples (same parts as the fit)
+    held = ~rep._rec.train
+    assert held.sum() == pytest.approx(0.3 * t.size, abs=N_BLOCKS)
+    rms = np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+    # no knot of the drift's broken line inside a block
+    from hystcomp.identify.parts_dynamics import _knot_times
+
+    knots = _knot_times(rep.model._ctx, 4)
+    for a, b in rep.model._ctx.held_out:
+        assert not np.any((knots > a) & (knots < b))
+    text = rep.report()
+    assert "5 blocks spread over the record" in text and "this diagnosis is taken" in text
+    d = rep.to_dict()
+    assert d["schema_version"] == 7 and len(d["held_out_blocks"]) == N_BLOCKS
+    assert d["other_split"]["held_out"] == "end"
+    # the figures mark each block's start and end
+    dashed = [ln for ln in rep.plots()["gap"].axes[0].lines if ln.get_linestyle() == "--"]
+    assert len(dashed) == 2 * N_BLOCKS
+    import matplotlib.pyplot as plt
+
+    plt.close("all")
+
+
+def test_blocks_asked_for_are_used_without_re_judging():
+    t, v, y = _warm_up_and_cool_down(seed=1)
+    rep = diagnose(t, v, y, progress=False, held_out="blocks", effects=["drift", "creep"])
+    assert rep.effects == ["drift"] and rep.other_split is None
+    assert len(rep.held_out_blocks) == N_BLOCKS
