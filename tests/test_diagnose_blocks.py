@@ -76,9 +76,14 @@ def test_a_drift_that_turns_back_is_named_on_blocks_spread_over_the_record():
     assert d["schema_version"] == 7 and len(d["held_out_blocks"]) == N_BLOCKS
     assert d["other_split"]["held_out"] == "end"
     # the figures mark each block's start and end
-    dashed = [ln for ln in rep.plots()["gap"].axes[0].lines if ln.get_linestyle() == "--"]
-    assert len(dashed) == 2 * N_BLOCKS
     import matplotlib.pyplot as plt
+    from matplotlib.colors import to_rgb
+
+    ax = rep.plots()["gap"].axes[0]
+    dashed = [ln for ln in ax.lines if ln.get_linestyle() == "--"]
+    assert len(dashed) == 2 * N_BLOCKS
+    shaded = [p for p in ax.patches if np.allclose(p.get_facecolor()[:3], to_rgb("tab:orange"))]
+    assert len(shaded) == N_BLOCKS
 
     plt.close("all")
 

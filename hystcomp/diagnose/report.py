@@ -77,11 +77,13 @@ def reversals(v, tol):
 
 
 def _mark_held_out(ax, xax, rec):
-    """Dashed lines at each held-out block's start (and end, inside the record)."""
+    """Dashed lines at each held-out block's start (and end, inside the
+    record), the blocks shaded in light orange."""
     for a, b in rec.blocks:
         ax.axvline(xax[a], color="k", ls="--", lw=0.8)
         if b < rec.n:
             ax.axvline(xax[b - 1], color="k", ls="--", lw=0.8)
+        ax.axvspan(xax[a], xax[b - 1], color="tab:orange", alpha=0.12, lw=0)
 
 
 def _ordinal(n):
@@ -334,7 +336,7 @@ class Diagnosis:
         for k, j, _ in rec.holds:
             ax[0].axvspan(xax[k], xax[j - 1], color="0.85", zorder=0)
         _mark_held_out(ax[0], xax, rec)
-        ax[0].set(xlabel=xlabel + " (grey: holds, dashed: held-out part)", ylabel=f"residual [{ou}]",
+        ax[0].set(xlabel=xlabel + " (grey: holds; dashed, orange: held-out part)", ylabel=f"residual [{ou}]",
                   title="in time (drift, creep, initial state)")
         ax[0].legend(fontsize=7, loc="best", framealpha=0.6)
         up = rec.direction[idx] >= 0
@@ -413,7 +415,7 @@ class Diagnosis:
             a.set_ylim(-ylim, ylim)
             a.set_ylabel(f"residual [{ou}]")
             a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
-        ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed: held-out part)")
+        ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed, orange: held-out part)")
         title = f"verdict: {self.verdict}; stopped: {self.stopped}"
         if self.held_out_beyond_fitted_range > BEYOND:
             title += ". Caution: " + caution(self.held_out_beyond_fitted_range, short=True)
