@@ -64,12 +64,16 @@ def caution(beyond, short=False):
             "missing effects (a record whose held-out part stays within the rest's range is judged more surely)")
 
 
-def _beyond_range(v, a, b, span):
-    """How far v[a:b] leaves the range of the rest of v, in shares of `span`."""
-    vh = v[a:b]
-    rest = np.concatenate([v[:a], v[b:]])
+def _range_excess(vh, rest, span):
+    """How far the samples `vh` leave the range of the samples `rest`, in
+    shares of `span`."""
     out = max(float(vh.max() - rest.max()), 0.0) + max(float(rest.min() - vh.min()), 0.0)
     return out / span
+
+
+def _beyond_range(v, a, b, span):
+    """How far v[a:b] leaves the range of the rest of v, in shares of `span`."""
+    return _range_excess(v[a:b], np.concatenate([v[:a], v[b:]]), span)
 
 
 def inner_block(v, length, span):
@@ -173,22 +177,19 @@ class Record:
         self.span = self.vmax - self.vmin
         if self.span <= 0:
             raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
-        # the held-out block: the end, or (auto) a block inside the record when
-        # the end leaves the rest's input range
-        self.held_start, self.held_end = self.k_val, n
+        # the held-out part: the end, or (auto) a block inside the record when
+        # the end leaves the rest's input range, or (blocks) blocks spread over it
         #: how far the end block would have left the range when the block was moved (else 0)
         self.held_moved_from_end = 0.0
         #: the held-out blocks, (first sample, sample after the last) each
         self.blocks = [(self.k_val, n)]
         if held_out == "blocks":
             self.blocks = spread_blocks(n, n - self.k_val)
-            self.held_start, self.held_end = self.blocks[0][0], self.blocks[-1][1]
         elif held_out == "auto":
             end = _beyond_range(self.v, self.k_val, n, self.span)
             if end > BEYOND:
                 a = inner_block(self.v, n - self.k_val, self.span)
                 if a is not None and _beyond_range(self.v, a, a + n - self.k_val, self.span) < 0.5 * end:
-                    self.held_start, self.held_end = a, a + n - self.k_val
                     self.held_moved_from_end = end
                     self.blocks = [(a, a + n - self.k_val)]
         self.train = np.ones(n, bool)
@@ -232,10 +233,17 @@ class Record:
         """How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0 when it stays inside): there the plays
         whose thresholds the fitted part never reached are extrapolated."""
-        if len(self.blocks) == 1:
-            return _beyond_range(self.v, self.held_start, self.held_end, self.span)
-        vh, rest = self.v[~self.train], self.v[self.train]
-        return (max(float(vh.max() - rest.max()), 0.0) + max(float(rest.min() - vh.min()), 0.0)) / self.span
+        return _range_excess(self.v[~self.train], self.v[self.train], self.span)
+
+    @property
+    def held_start(self):
+        """The first held-out sample (of the first block)."""
+        return self.blocks[0][0]
+
+    @property
+    def held_end(self):
+        """The sample after the last held-out one (of the last block)."""
+        return self.blocks[-1][1]
 
     @property
     def held_out_in_middle(self):
