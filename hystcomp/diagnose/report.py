@@ -128,7 +128,9 @@ class Diagnosis:
         One per added effect: ``effect``, ``rms_before``, ``rms_after``,
         ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
         output span), ``evidence`` (the signature test, the extension and its
-        parameters, gain and BIC change, every candidate's held-out RMS) and
+        parameters, gain and BIC change, the held-out RMS of every
+        candidate fitted at the step, ``candidates``, and those not fitted
+        because their signature was absent, ``signature_absent``) and
         ``dropped`` (True when a later effect made it redundant) and
         ``alternatives`` (its near ties, see :attr:`ambiguous`).
     revisions : list of dict

@@ -207,6 +207,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         if paired is not None:
             step_ev["paired"] = paired
         step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
+        # the parts not fitted at this step: their signature was absent
+        step_ev["signature_absent"] = list(not_fitted)
         # the parts that passed every acceptance rule at this step, with their
         # held-out gain in noise variances (near ties: see _alternatives)
         step_ev["acceptable"] = dict(acceptable or {})
@@ -223,6 +225,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     while candidates and len(chosen) < max_effects:
         cur_val = rms_val(cur)
         trials = {}
+        # a part whose signature is absent from the residual cannot be accepted at
+        # this step (acceptance, the joint retry, pairs and near ties all need it),
+        # so it is not fitted: the signature gates the fit
+        not_fitted = []
         for cls in candidates:
             if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
                 continue
@@ -231,6 +237,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             part = cls()
             part.prepare(rec.y, ctx)
             part.attach(PartsModel(struct, cur.values, cur.theta, ctx, cur.names))
+            if not _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["present"]:
+                not_fitted.append(part.kind)
+                continue
             st = struct.extended(part)
             kinds = set(st.kinds)
             start = {k: dict(vv) for k, vv in cur.values.items()}
@@ -256,7 +265,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             say(f"step {len(chosen) + 1}: {part.effect:17s} {part.kind:22s} held-out RMS {trials[part.kind][3]:.4g}"
                 f"  [{time.perf_counter() - t0:.1f} s]")
         if not trials:
-            stopped = "no extension left to try"
+            absent = sorted({PARTS[k].effect for k in not_fitted})
+            stopped = ("no remaining effect's signature is present in the residual (" + ", ".join(absent) + ")"
+                       if absent else "no extension left to try")
+            say(stopped)
             break
         # acceptance: the signature is present, the training BIC falls and the
         # held-out mean square falls by at least MIN_GAIN noise variances
@@ -335,8 +347,6 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     why.append(f"lowers the held-out mean square by {g:.2f} noise variances (needs {MIN_GAIN})")
                 if dbic >= 0:
                     why.append(f"raises the BIC by {dbic:.1f}")
-                if not sig_ok:
-                    why.append("its signature is absent from the residual")
                 if g < MIN_SHARE * excess:
                     why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
                                f"(needs {100 * MIN_SHARE:.0f} %, or {100 * MIN_SHARE_OWN:.0f} % and a third of "
