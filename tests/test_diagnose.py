@@ -85,6 +85,17 @@ def test_report_json_and_model_reproduces_heldout_rms():
     s = js["steps"][0]
     assert list(s)[:5] == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct"]
     assert s["rms_after_pct"] == pytest.approx(100 * s["rms_after"] / np.ptp(d.y))
+    assert js["rest"] == {"origin": 0.0, "other": None}       # the record reaches 0 V
+    # the signature gates the fit: at the first step the parts fitted are those
+    # whose effect's signature is present in the base residual, the others are
+    # listed as not fitted (and both lists are non-empty on this record)
+    from hystcomp.identify.parts import PARTS
+
+    fitted, skipped = s["evidence"]["candidates"], s["evidence"]["signature_absent"]
+    assert fitted and skipped and not set(fitted) & set(skipped)
+    first = rep.first_evidence
+    assert all(first[PARTS[k].effect]["present"] for k in fitted if PARTS[k].effect in first)
+    assert all(not first[PARTS[k].effect]["present"] for k in skipped if PARTS[k].effect in first)
 
 
 @pytest.mark.parametrize("effect,mechanism,seed", [("rate_dependence", "lag", 3),
