@@ -203,12 +203,17 @@ class Record:
         self.output_sign = -1.0 if slope < 0 else 1.0
         if self.output_sign < 0:
             self.y = -self.y
-        # the core's scaling: physical zero as origin when the record contains or
-        # comes near 0 (a unipolar record 0..100 V: plays up to the full span);
-        # else the first sample (a record far from 0 starts with plays at rest)
-        near = self.vmin <= 0.0 <= self.vmax or min(abs(self.vmin), abs(self.vmax)) <= self.span
-        self.origin = 0.0 if near else float(self.v[0])
-        self.scale = float(np.max(np.abs(self.v - self.origin))) or 1.0
+        # the plays' rest point (the core's origin): physical zero when the record
+        # contains or comes near 0 (a unipolar record 0..100 V: plays up to the
+        # full span); else the first sample (a record far from 0 starts with
+        # plays at rest).  A record that never reaches 0 may have started
+        # either way (switched on at 0 V and driven to its first sample, or
+        # settled at it): the search tries both (:attr:`other_origin`)
+        contains = self.vmin <= 0.0 <= self.vmax
+        near = contains or min(abs(self.vmin), abs(self.vmax)) <= self.span
+        self.set_origin(0.0 if near else float(self.v[0]))
+        #: the other rest point the search tries (None on a record that reaches 0)
+        self.other_origin = None if contains else (float(self.v[0]) if near else 0.0)
         self.duration = None if self.dt is None else n * self.dt
         # input noise (the input's high-frequency part) and a smoothed input
         self.input_noise = _input_noise(self.v)
@@ -227,6 +232,14 @@ class Record:
             self.holds = []
             self.f_peak, self.peak_share = 0.0, 1.0
         self.direction = np.sign(self.rate)
+
+    def set_origin(self, origin):
+        """Start the plays at rest at `origin` (input units): the core works
+        on ``(v - origin) / scale`` with ``scale`` the largest ``|v - origin|``.
+        (A play at rest at ``origin`` is the play from 0 of ``v - origin``,
+        shifted by ``origin``: the rest point is the core's origin.)"""
+        self.origin = float(origin)
+        self.scale = float(np.max(np.abs(self.v - self.origin))) or 1.0
 
     @property
     def beyond_fitted_range(self):

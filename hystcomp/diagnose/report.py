@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 7
+SCHEMA_VERSION = 8
 
 
 def _jsonable(x):
@@ -128,7 +128,9 @@ class Diagnosis:
         One per added effect: ``effect``, ``rms_before``, ``rms_after``,
         ``rms_before_pct``, ``rms_after_pct`` (held-out RMS, and in % of the
         output span), ``evidence`` (the signature test, the extension and its
-        parameters, gain and BIC change, every candidate's held-out RMS) and
+        parameters, gain and BIC change, the held-out RMS of every
+        candidate fitted at the step, ``candidates``, and those not fitted
+        because their signature was absent, ``signature_absent``) and
         ``dropped`` (True when a later effect made it redundant) and
         ``alternatives`` (its near ties, see :attr:`ambiguous`).
     revisions : list of dict
@@ -154,6 +156,16 @@ class Diagnosis:
         (``held_out``, ``validation``, ``verdict``, ``effects``,
         ``tentative``, ``rms_heldout``, ``noise_floor``,
         ``noise_floors_left``) and ``why`` the reported one was taken.
+    rest : dict
+        Where the base model's plays start at rest (``origin``, input
+        units): 0 on a record that reaches 0 V.  On a record that never
+        does, the search fits the base model with the plays at rest at 0 and
+        at the first sample and takes the better (by a BIC lower by more
+        than 10; else 0, or the first sample on a record far from 0):
+        ``other`` is the point not taken, ``bic`` and ``bic_other`` the two
+        base models' BIC on the fitted part, ``why`` the report's line.
+        Neither is an unknown memory, so no effect is named for it (an
+        ``initial_state`` is one beyond both).
     held_out_beyond_fitted_range : float
         How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0: inside it).  Above 0.05 the report
@@ -189,6 +201,7 @@ class Diagnosis:
     held_out_moved = 0.0
     other_split = None
     held_out_blocks = ()
+    rest = None
 
     def __init__(self, **kw):
         self.__dict__.update(kw)
@@ -207,9 +220,9 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 7; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 8; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
-        ``held_out_blocks`` and ``other_split``).
+        ``held_out_blocks`` and ``other_split``, 8 ``rest``).
 
         Returns
         -------
@@ -229,7 +242,7 @@ class Diagnosis:
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
             "rms_heldout": self.rms_heldout, "output_span": self.output_span,
             "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
-            "other_split": self.other_split,
+            "other_split": self.other_split, "rest": self.rest,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
@@ -258,6 +271,8 @@ class Diagnosis:
         lines = [f"base model: PI with {self.model._ctx.thresholds.size} plays; held-out RMS {self.rms_before:.4g} "
                  f"({self._pct(self.rms_before):.3g} % of the output span), noise floor {s:.4g} "
                  f"({self._pct(s):.3g} %, from the {self.noise_info['method'].replace('_', '-')} part)"]
+        if self.rest is not None and self.rest.get("other") is not None:
+            lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():
             lines.append(f"  {name}: {why}")
         for i, st in enumerate(self.steps, 1):

@@ -160,15 +160,15 @@ def _choose_split(end, blocks, say):
 def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto"):
     t0 = time.perf_counter()
     rec = Record(t, v, y, validation, held_out)
-    ctx = base_context(rec, n_thresholds, thresholds)
     held = ~rec.train
-    vp = VariableProjection(ctx, rec.y, rec.train)
+    base_struct = Structure()
+    ctx, vp, cur, rest = _rest_point(rec, n_thresholds, thresholds)
+    if rest["other"] is not None:
+        say(rest["why"])
 
     def rms_val(pt):
         return _rms((rec.y - pt.prediction)[held])
 
-    base_struct = Structure()
-    cur = vp.evaluate(base_struct, {})
     struct = base_struct
     base_pt = cur
     sigma, noise_info = noise_floor(rec, rec.y - cur.prediction)
@@ -207,6 +207,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         if paired is not None:
             step_ev["paired"] = paired
         step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
+        # the parts not fitted at this step: their signature was absent
+        step_ev["signature_absent"] = list(not_fitted)
         # the parts that passed every acceptance rule at this step, with their
         # held-out gain in noise variances (near ties: see _alternatives)
         step_ev["acceptable"] = dict(acceptable or {})
@@ -223,6 +225,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     while candidates and len(chosen) < max_effects:
         cur_val = rms_val(cur)
         trials = {}
+        # a part whose signature is absent from the residual cannot be accepted at
+        # this step (acceptance, the joint retry, pairs and near ties all need it),
+        # so it is not fitted: the signature gates the fit
+        not_fitted = []
         for cls in candidates:
             if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
                 continue
@@ -231,6 +237,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             part = cls()
             part.prepare(rec.y, ctx)
             part.attach(PartsModel(struct, cur.values, cur.theta, ctx, cur.names))
+            if not _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma)["present"]:
+                not_fitted.append(part.kind)
+                continue
             st = struct.extended(part)
             kinds = set(st.kinds)
             start = {k: dict(vv) for k, vv in cur.values.items()}
@@ -256,7 +265,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             say(f"step {len(chosen) + 1}: {part.effect:17s} {part.kind:22s} held-out RMS {trials[part.kind][3]:.4g}"
                 f"  [{time.perf_counter() - t0:.1f} s]")
         if not trials:
-            stopped = "no extension left to try"
+            absent = sorted({PARTS[k].effect for k in not_fitted})
+            stopped = ("no remaining effect's signature is present in the residual (" + ", ".join(absent) + ")"
+                       if absent else "no extension left to try")
+            say(stopped)
             break
         # acceptance: the signature is present, the training BIC falls and the
         # held-out mean square falls by at least MIN_GAIN noise variances
@@ -335,8 +347,6 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     why.append(f"lowers the held-out mean square by {g:.2f} noise variances (needs {MIN_GAIN})")
                 if dbic >= 0:
                     why.append(f"raises the BIC by {dbic:.1f}")
-                if not sig_ok:
-                    why.append("its signature is absent from the residual")
                 if g < MIN_SHARE * excess:
                     why.append(f"removes {100 * g / excess:.0f} % of the structure above the noise "
                                f"(needs {100 * MIN_SHARE:.0f} %, or {100 * MIN_SHARE_OWN:.0f} % and a third of "
@@ -453,7 +463,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
-                validation=rec.held_interval(), held_out_blocks=rec.held_blocks(),
+                validation=rec.held_interval(), held_out_blocks=rec.held_blocks(), rest=rest,
                 held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
@@ -515,6 +525,51 @@ def base_context(rec, n_thresholds=20, thresholds=None):
     else:
         ctx.thresholds = play_thresholds(rec.span / rec.scale, n_thresholds)
     return ctx
+
+
+#: how far (BIC, on the fitted part) the base model with its plays at rest at
+#: the other rest point must beat the default one to be taken: equal
+#: parameters, so 10 is a training mean square lower by a factor exp(-10 / n)
+#: ("very strong" evidence on Kass and Raftery's scale, 1995)
+REST_BIC = 10.0
+
+
+def _rest_point(rec, n_thresholds=20, thresholds=None):
+    """The base model's context, engine and fit with the plays at rest at the
+    better of the record's rest points (:attr:`Record.other_origin`).
+
+    A record that never reaches 0 V may start with its actuator switched on at
+    0 V and driven to the first sample (the plays at rest at 0) or settled at
+    its first sample (at rest there); neither is an unknown memory, so the
+    search takes the one whose base model fits the fitted part better (by
+    more than :data:`REST_BIC`, else the default) and names no effect for it.
+    Sets ``rec``'s origin; returns ``(ctx, vp, fit, rest)`` with ``rest`` the
+    report's summary (``origin``, ``other``, the two BICs and ``why``)."""
+    first = rec.origin
+    ctx = base_context(rec, n_thresholds, thresholds)
+    vp = VariableProjection(ctx, rec.y, rec.train)
+    fit = vp.evaluate(Structure(), {})
+    rest = {"origin": first, "other": rec.other_origin}
+    if rec.other_origin is None:
+        return ctx, vp, fit, rest
+    rec.set_origin(rec.other_origin)
+    ctx2 = base_context(rec, n_thresholds, thresholds)
+    vp2 = VariableProjection(ctx2, rec.y, rec.train)
+    fit2 = vp2.evaluate(Structure(), {})
+    take = fit2.bic < fit.bic - REST_BIC
+    (bic, bic_other) = (fit2.bic, fit.bic) if take else (fit.bic, fit2.bic)
+    if take:
+        ctx, vp, fit = ctx2, vp2, fit2
+        rest["origin"], rest["other"] = rec.other_origin, first
+    else:
+        rec.set_origin(first)
+    rec.other_origin = rest["other"]
+    rest["bic"], rest["bic_other"] = round(bic, 1), round(bic_other, 1)
+    rest["why"] = (f"the record never reaches 0: the plays start at rest at {rest['origin']:.4g} (base model BIC "
+                   f"{bic:.1f}), not at {rest['other']:.4g} ({bic_other:.1f}); "
+                   + ("the other rest point fits better by more than " if take else
+                      "the default, kept unless the other fits better by more than ") + f"{REST_BIC:g}")
+    return ctx, vp, fit, rest
 
 
 #: plays kept above half the input span on a record whose scale exceeds it

@@ -11,6 +11,12 @@ Al Janaideh et al. 2009) and envelopes
 in units where the input scale is 1.  With ``rho = 1``, ``q = b = 0`` and
 ``beta = 0`` the outputs are the classical plays of
 :func:`hystcomp._kernels.play_states` (eq. 18).
+
+Viscous plays: with ``decay = exp(-dt / tau) > 0`` a play outside its band
+``[lo, hi]`` is not clamped to it but relaxes towards it, ``w <- c + (w -
+c) decay`` with ``c`` the clamped value: the overstress law of Perzyna
+(1966), ``dw/dt = -(w - c) / tau``, exact per sample for an input held
+over the sample.  ``decay = 0`` is the rate-independent play.
 """
 
 import math
@@ -28,7 +34,7 @@ def _env(s, q, b):
 
 
 @njit(cache=True)
-def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0):
+def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
 
     x : input (scaled), r : thresholds (scaled, r[0] may be 0), beta : rate
@@ -38,7 +44,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
     ``r_i > 0`` see ``x - shift`` (thresholds ``r_i + shift`` rising and
     ``r_i - shift`` falling: asymmetric thresholds).  level : thresholds
     that grow with the input level, ``r_i max(1 + level x, 0.05)`` (a loop
-    wider at one end of the stroke than at the other).
+    wider at one end of the stroke than at the other).  decay : viscous
+    plays (see the module docstring; the preload is applied at rest, fully
+    relaxed, and the play with ``r_i = 0`` stays the input itself).
     """
     N = r.size
     w = np.zeros(N)
@@ -70,6 +78,8 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
                 wi = hi
             if wi < lo:
                 wi = lo
+            if decay > 0.0 and r[i] > 0.0:
+                wi = wi + (w[i] - wi) * decay
             w[i] = wi
             out[k, i] = wi
 

@@ -14,7 +14,8 @@ in one of five places (its ``slot``), applied in this order:
 ``core``
     sets options of the hysteresis core's plays (:class:`Asymmetry` and
     :class:`Saturation`: envelopes, eq. 23; :class:`RateThresholds`:
-    ``r_i + beta |dv/dt|``; :class:`InitialState`: a preload history);
+    ``r_i + beta |dv/dt|``; :class:`ViscousPlays`: plays relaxing at a
+    finite rate; :class:`InitialState`: a preload history);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
     a linear stage after the hysteresis; :class:`GainDrift`,
@@ -45,13 +46,13 @@ importing this module registers every built-in part, in one place.
 
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
 from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
-                         RateThresholds, Saturation)
+                         RateThresholds, Saturation, ViscousPlays)
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
                              SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
-__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "LevelThresholds",
+__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "ViscousPlays", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

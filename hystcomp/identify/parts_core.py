@@ -10,7 +10,7 @@ import numpy as np
 from ._part_kernels import core_columns
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["PICore", "Offset", "RateThresholds", "Asymmetry", "LevelThresholds", "Saturation", "InitialState"]
+__all__ = ["PICore", "Offset", "RateThresholds", "ViscousPlays", "Asymmetry", "LevelThresholds", "Saturation", "InitialState"]
 
 
 # ----------------------------------------------------------------------------
@@ -45,7 +45,7 @@ class PICore(Part):
         core_columns(np.ascontiguousarray(x), ctx.thresholds, beta, inv_dt, float(options.get("rho", 1.0)),
                      float(options.get("ql", 0.0)), float(options.get("qr", 0.0)), float(options.get("bl", 0.0)),
                      float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)),
-                     float(options.get("level", 0.0)))
+                     float(options.get("level", 0.0)), float(options.get("decay", 0.0)))
         return out
 
 
@@ -107,6 +107,50 @@ class RateThresholds(Part):
     def describe(self, values):
         return {"part": self.description, "relative_rate_coefficient":
                 float(f"{values['relative_rate_coefficient']:.4g}")}
+
+
+@register
+class ViscousPlays(Part):
+    """Plays whose state moves at a finite rate (viscoplastic plays): outside
+    its band a play relaxes towards it with a time constant ``tau``,
+    ``dw/dt = -(w - c) / tau`` with ``c`` the rate-independent play's value
+    (the overstress law of Perzyna 1966; the Maxwell-slip elements of a
+    friction or piezo model with a viscous damper in series).  A faster
+    input leaves the states further behind, so the loops widen with the
+    drive rate and round off at the reversals, which thresholds growing
+    with ``|dv/dt|`` draw only at the rate's level.  ``tau -> 0`` is the
+    PI core.
+
+    Examples
+    --------
+    >>> ctx = Context(np.linspace(0, 1, 11), 0.01, 0.0, 1.0, 0.11)
+    >>> opts = {}
+    >>> ViscousPlays().core_options({"time_constant": 0.01}, ctx, opts)
+    >>> round(opts["decay"], 6)        # exp(-dt / tau)
+    0.367879
+    """
+
+    effect = "rate_dependence"
+    kind = "viscous_plays"
+    slot = "core"
+    order = 12
+    needs_time = True
+    description = "viscous plays (state relaxing towards the play with time constant tau)"
+
+    def _bounds(self, ctx):
+        lo = 0.2 * ctx.dt
+        return lo, max(0.05 * (ctx.duration or ctx.n * ctx.dt), 10.0 * lo)
+
+    def parameters(self, ctx, kinds):
+        lo, hi = self._bounds(ctx)
+        return [Parameter("time_constant", min(max(5.0 * ctx.dt, lo), hi), lo, hi, True)]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = self._bounds(ctx)
+        return [{"time_constant": min(max(m * ctx.dt, lo), hi)} for m in (1.0, 4.0, 16.0, 64.0, 256.0)]
+
+    def core_options(self, values, ctx, options):
+        options["decay"] = float(np.exp(-ctx.dt / values["time_constant"]))
 
 
 @register

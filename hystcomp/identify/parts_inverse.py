@@ -74,6 +74,7 @@ class _Stepper:
         self.bl, self.br = float(options.get("bl", 0.0)), float(options.get("br", 0.0))
         self.shift = float(options.get("shift", 0.0))
         self.level = float(options.get("level", 0.0))
+        self.decay = float(options.get("decay", 0.0))
         self.preload = [float(u) for u in options.get("preload", ())]
         theta = model.theta
         k = self.r.size
@@ -141,7 +142,7 @@ class _Stepper:
     def reset(self):
         self.w = np.zeros(self.r.size)
         for u in self.preload:
-            self.w = self._plays(np.array([u]), self.w, rate=0.0)[0]
+            self.w = self._plays(np.array([u]), self.w, rate=0.0, at_rest=True)[0]
         self.prev = None
         self.k = 0
         self.input_state = [None] * len(self.input_lags)
@@ -154,7 +155,7 @@ class _Stepper:
         for b in self.bends:
             b[4].reset()
 
-    def _plays(self, x, w, rate):
+    def _plays(self, x, w, rate, at_rest=False):
         """Play states after trial scaled inputs x (shape (m,)) from states w: (m, N)."""
         r = self.r
         extra = (self.beta * np.broadcast_to(np.asarray(rate, dtype=np.float64), x.shape))[:, None]
@@ -164,7 +165,12 @@ class _Stepper:
         xi = np.where(pos, x[:, None] - self.shift, x[:, None])
         lo = self.rho * _env(xi - ri, self.ql, self.bl)
         hi = _env(xi + ri, self.qr, self.br)
-        return np.maximum(np.minimum(np.broadcast_to(w, lo.shape), hi), lo)
+        wb = np.broadcast_to(w, lo.shape)
+        c = np.maximum(np.minimum(wb, hi), lo)
+        if self.decay > 0.0 and not at_rest:
+            # viscous plays relax towards the band (the preload, at rest, is fully relaxed)
+            c = np.where(pos, c + (wb - c) * self.decay, c)
+        return c
 
     def output(self, x, commit=False):
         """Model output (in the model's sign) for trial scaled inputs x (m,) at the current
