@@ -464,6 +464,10 @@ class OutputQuadratic(_OutputBend):
 
 #: width of the hinge's rounded corner (scaled output, +-1 over the record)
 HINGE_WIDTH = 0.05
+#: the hinge's slope ratio (above the corner over below) is kept within
+#: ``[1/HINGE_RATIO, HINGE_RATIO]``: a stiffness that changes, not a clip (a
+#: slope falling to 0 is the output clip's, :class:`OutputClip`)
+HINGE_RATIO = 2.0
 
 
 @register
@@ -472,8 +476,9 @@ class OutputHinge(_OutputBend):
     of one output level (a stack stiffer in compression than in tension, a
     contact that closes), ``y = H + k w ln(1 + exp((z - c)/w))``: slope 1
     below the corner ``c``, ``1 + k`` above it (``k`` of either sign, fitted
-    as a weight), the corner rounded over ``w`` = :data:`HINGE_WIDTH` (z = H
-    scaled to +-1 over the record; bimodular elasticity, Ambartsumyan 1982).
+    as a weight, ``1 + k`` within a factor :data:`HINGE_RATIO` of 1), the
+    corner rounded over ``w`` = :data:`HINGE_WIDTH` (z = H scaled to +-1
+    over the record; bimodular elasticity, Ambartsumyan 1982).
 
     Examples
     --------
@@ -495,6 +500,13 @@ class OutputHinge(_OutputBend):
 
     def shape(self, z, values):
         return HINGE_WIDTH * np.logaddexp(0.0, (z - values["corner"]) / HINGE_WIDTH)
+
+    def columns(self, values, ctx):
+        col, _, _, names = super().columns(values, ctx)
+        # the weight k scale is the slope's change relative to the driving output's:
+        # 1 + k within [1/HINGE_RATIO, HINGE_RATIO]
+        return (col, np.array([(1.0 / HINGE_RATIO - 1.0) * self._scale]),
+                np.array([(HINGE_RATIO - 1.0) * self._scale]), names)
 
     def describe(self, values):
         return {"part": self.description, "corner_scaled": float(f"{values['corner']:.4g}")}
