@@ -9,7 +9,7 @@ from realistic import excitations as ex
 from realistic import mechanisms as me
 
 from hystcomp.identify.parts import OutputHinge
-from hystcomp.identify.parts_dynamics import HINGE_WIDTH
+from hystcomp.identify.parts_dynamics import HINGE_RATIO, HINGE_WIDTH
 
 
 def test_the_hinge_has_slope_zero_below_its_corner_and_one_above():
@@ -49,6 +49,14 @@ def test_a_bimodular_spring_after_the_core_is_named_asymmetry_by_the_hinge():
     kinds = [d["kind"] for d in rep.model.describe()]
     assert "output_hinge" in kinds, kinds
     assert rep.verdict == "explained" and rep.rms_heldout < 1.5 * rep.noise_floor, rep.report()
+    # the slope ratio stays within [1/HINGE_RATIO, HINGE_RATIO]: the weight's bounds are set
+    # from the driving output's scale (k scale), and the fitted weight is inside them
+    hinge = [p for p in rep.model.structure.parts if p.kind == "output_hinge"][0]
+    _, lo, hi, _ = hinge.columns(rep.model.values["output_hinge"], rep.model._ctx)
+    assert lo[0] == pytest.approx((1 / HINGE_RATIO - 1) * hinge._scale) and hi[0] == pytest.approx(
+        (HINGE_RATIO - 1) * hinge._scale)
+    k = rep.model.theta[rep.model.names.index("output_hinge")]
+    assert lo[0] <= k <= hi[0]
     held = ~rep._rec.train
     rms = np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
