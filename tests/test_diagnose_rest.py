@@ -11,7 +11,7 @@ from realistic import mechanisms as me
 
 from hystcomp.diagnose import diagnose
 from hystcomp.diagnose.record import Record
-from hystcomp.diagnose.search import REST_BIC
+from hystcomp.diagnose.base import REST_BIC
 
 
 def _biased_record(start, seed=0):

@@ -89,7 +89,7 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         excursion from the origin, N = `n_thresholds`; on a record whose
         span is less than 1.5 times that excursion, a unipolar stroke, N - 4
         of them below half the span and 4 above, see
-        :func:`~hystcomp.diagnose.search.play_thresholds`) or a
+        :func:`~hystcomp.diagnose.base.play_thresholds`) or a
         :class:`~hystcomp.models.PI` whose thresholds are used.
     n_thresholds : int
         Number of plays of the default base model.
@@ -216,7 +216,7 @@ def evidence(t, v, y, model=None, validation=0.3, held_out="auto"):
     """
     from ..identify.search import Structure, VariableProjection
     from .record import Record, noise_floor
-    from .search import base_context
+    from .base import base_context
     from .signatures import evidence as _evidence
 
     rec = Record(t, v, y, validation, held_out)

@@ -5,9 +5,10 @@ import time
 
 import numpy as np
 
-from ..identify.parts import PARTS, Context
-from ..identify.parts_output import ONE_SIDED_SPAN
-from ..identify.search import PartsModel, Structure, VariableProjection
+from ..identify.parts import PARTS
+from ..identify.search import PartsModel, Structure
+# the base model's pieces, importable from here as before
+from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
 from .signatures import evidence as _evidence
 
@@ -162,7 +163,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     rec = Record(t, v, y, validation, held_out)
     held = ~rec.train
     base_struct = Structure()
-    ctx, vp, cur, rest = _rest_point(rec, n_thresholds, thresholds)
+    ctx, vp, cur, rest = rest_point(rec, n_thresholds, thresholds)
     if rest["other"] is not None:
         say(rest["why"])
 
@@ -505,112 +506,6 @@ def _alternatives(steps, chosen):
         if best:
             out[st["effect"]] = [a["effect"] for a in st["alternatives"]]
     return out
-
-
-def base_context(rec, n_thresholds=20, thresholds=None):
-    """The parts' :class:`~hystcomp.identify.parts.Context` of a record:
-    its scaling and clock, and the base model's play thresholds (`thresholds`
-    in input units when given, else :func:`play_thresholds`)."""
-    if rec.dt is None:
-        fit_end = held = None
-    elif rec.held_out_in_middle:
-        fit_end, held = None, [(a * rec.dt, b * rec.dt) for a, b in rec.blocks]
-    else:
-        fit_end, held = rec.held_start * rec.dt, None
-    ctx = Context(rec.v, rec.dt, rec.origin, rec.scale, rec.duration, n_thresholds, fit_end=fit_end,
-                  held_out=held)
-    if thresholds is not None:
-        r = np.asarray(thresholds, dtype=np.float64) / rec.scale
-        ctx.thresholds = np.concatenate([[0.0], r[r > 0]])
-    else:
-        ctx.thresholds = play_thresholds(rec.span / rec.scale, n_thresholds)
-    return ctx
-
-
-#: how far (BIC, on the fitted part) the base model with its plays at rest at
-#: the other rest point must beat the default one to be taken: equal
-#: parameters, so 10 is a training mean square lower by a factor exp(-10 / n)
-#: ("very strong" evidence on Kass and Raftery's scale, 1995)
-REST_BIC = 10.0
-
-
-def _rest_point(rec, n_thresholds=20, thresholds=None):
-    """The base model's context, engine and fit with the plays at rest at the
-    better of the record's rest points (:attr:`Record.other_origin`).
-
-    A record that never reaches 0 V may start with its actuator switched on at
-    0 V and driven to the first sample (the plays at rest at 0) or settled at
-    its first sample (at rest there); neither is an unknown memory, so the
-    search takes the one whose base model fits the fitted part better (by
-    more than :data:`REST_BIC`, else the default) and names no effect for it.
-    Sets ``rec``'s origin; returns ``(ctx, vp, fit, rest)`` with ``rest`` the
-    report's summary (``origin``, ``other``, the two BICs and ``why``)."""
-    first = rec.origin
-    ctx = base_context(rec, n_thresholds, thresholds)
-    vp = VariableProjection(ctx, rec.y, rec.train)
-    fit = vp.evaluate(Structure(), {})
-    rest = {"origin": first, "other": rec.other_origin}
-    if rec.other_origin is None:
-        return ctx, vp, fit, rest
-    rec.set_origin(rec.other_origin)
-    ctx2 = base_context(rec, n_thresholds, thresholds)
-    vp2 = VariableProjection(ctx2, rec.y, rec.train)
-    fit2 = vp2.evaluate(Structure(), {})
-    take = fit2.bic < fit.bic - REST_BIC
-    (bic, bic_other) = (fit2.bic, fit.bic) if take else (fit.bic, fit2.bic)
-    if take:
-        ctx, vp, fit = ctx2, vp2, fit2
-        rest["origin"], rest["other"] = rec.other_origin, first
-    else:
-        rec.set_origin(first)
-    rec.other_origin = rest["other"]
-    rest["bic"], rest["bic_other"] = round(bic, 1), round(bic_other, 1)
-    rest["why"] = (f"the record never reaches 0: the plays start at rest at {rest['origin']:.4g} (base model BIC "
-                   f"{bic:.1f}), not at {rest['other']:.4g} ({bic_other:.1f}); "
-                   + ("the other rest point fits better by more than " if take else
-                      "the default, kept unless the other fits better by more than ") + f"{REST_BIC:g}")
-    return ctx, vp, fit, rest
-
-
-#: plays kept above half the input span on a record whose scale exceeds it
-LOADING_PLAYS = 4
-
-
-def play_thresholds(span, n):
-    """Thresholds of the base model's `n` plays (scaled input, origin 0).
-
-    After the first loading, an input that moves within a span ``span`` moves
-    only the plays with thresholds below ``span / 2``.  A bipolar record
-    (``span`` = 2) gets ``i / n`` as before.  A record whose scale is larger
-    than half its span (a unipolar stroke 0 ... V: ``span`` = 1) gets
-    ``n - LOADING_PLAYS`` thresholds evenly below ``span / 2``, where its
-    loops need the resolution, and ``LOADING_PLAYS`` evenly from there to 1
-    for the first loading curve; evenly up to 1 (``i / n``) it would spend
-    half its plays on thresholds that only the first loading moves.
-
-    Parameters
-    ----------
-    span : float
-        The input's span over its scale (``(max v - min v) / scale``).
-    n : int
-        Number of plays (the first has threshold 0).
-
-    Returns
-    -------
-    ndarray, shape (n,)
-
-    Examples
-    --------
-    >>> play_thresholds(2.0, 4).tolist()
-    [0.0, 0.25, 0.5, 0.75]
-    >>> play_thresholds(1.0, 12).round(4).tolist()
-    [0.0, 0.0625, 0.125, 0.1875, 0.25, 0.3125, 0.375, 0.4375, 0.5, 0.625, 0.75, 0.875]
-    """
-    half = 0.5 * span
-    if span >= ONE_SIDED_SPAN or n <= 2 * LOADING_PLAYS:     # two-sided (0.5 span is exact)
-        return np.arange(n) / n
-    m = n - LOADING_PLAYS
-    return np.concatenate([np.arange(m) / m * half, half + np.arange(LOADING_PLAYS) / LOADING_PLAYS * (1.0 - half)])
 
 
 def _n_parameters(part, structure, ctx):

@@ -12,7 +12,7 @@ from ._part_kernels import fractional_delay
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
 __all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
-           "OutputQuadratic", "OutputCubic", "Drift", "SlowDrift", "SensorDrift"]
+           "OutputQuadratic", "OutputCubic", "OutputHinge", "Drift", "SlowDrift", "SensorDrift"]
 
 
 # ----------------------------------------------------------------------------
@@ -438,7 +438,11 @@ class _OutputBend(Part):
             self._center = 0.5 * (float(h.max()) + float(h.min()))
             self._scale = 0.5 * float(np.ptp(h)) or 1.0
         z = (h - self._center) / self._scale
-        return (z ** self.power)[:, None], np.array([-np.inf]), np.array([np.inf]), [self.kind]
+        return self.shape(z, values)[:, None], np.array([-np.inf]), np.array([np.inf]), [self.kind]
+
+    def shape(self, z, values):
+        """The bend of the scaled output `z` (its weight is fitted)."""
+        return z ** self.power
 
 
 @register
@@ -456,6 +460,56 @@ class OutputQuadratic(_OutputBend):
     kind = "output_quadratic"
     power = 2
     description = "quadratic output map y = H + a H^2"
+
+
+#: width of the hinge's rounded corner (scaled output, +-1 over the record)
+HINGE_WIDTH = 0.05
+#: the hinge's slope ratio (above the corner over below) is kept within
+#: ``[1/HINGE_RATIO, HINGE_RATIO]``: a stiffness that changes, not a clip (a
+#: slope falling to 0 is the output clip's, :class:`OutputClip`)
+HINGE_RATIO = 2.0
+
+
+@register
+class OutputHinge(_OutputBend):
+    """Asymmetry on the output side: a stiffness that differs on either side
+    of one output level (a stack stiffer in compression than in tension, a
+    contact that closes), ``y = H + k w ln(1 + exp((z - c)/w))``: slope 1
+    below the corner ``c``, ``1 + k`` above it (``k`` of either sign, fitted
+    as a weight, ``1 + k`` within a factor :data:`HINGE_RATIO` of 1), the
+    corner rounded over ``w`` = :data:`HINGE_WIDTH` (z = H scaled to +-1
+    over the record; bimodular elasticity, Ambartsumyan 1982).
+
+    Examples
+    --------
+    >>> h = OutputHinge()
+    >>> z = np.array([-1.0, 0.0, 1.0])
+    >>> h.shape(z, {"corner": 0.0}).round(4).tolist()      # 0 below the corner, z - c above
+    [0.0, 0.0347, 1.0]
+    """
+
+    effect = "asymmetry"
+    kind = "output_hinge"
+    description = "bimodular output map y = H + k max(z - c, 0) (rounded corner)"
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("corner", 0.0, -0.8, 0.8, False)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"corner": c} for c in (-0.5, 0.0, 0.5)]
+
+    def shape(self, z, values):
+        return HINGE_WIDTH * np.logaddexp(0.0, (z - values["corner"]) / HINGE_WIDTH)
+
+    def columns(self, values, ctx):
+        col, _, _, names = super().columns(values, ctx)
+        # the weight k scale is the slope's change relative to the driving output's:
+        # 1 + k within [1/HINGE_RATIO, HINGE_RATIO]
+        return (col, np.array([(1.0 / HINGE_RATIO - 1.0) * self._scale]),
+                np.array([(HINGE_RATIO - 1.0) * self._scale]), names)
+
+    def describe(self, values):
+        return {"part": self.description, "corner_scaled": float(f"{values['corner']:.4g}")}
 
 
 @register

@@ -12,7 +12,7 @@ part the model contains that can be inverted causally:
   level-dependent and asymmetric thresholds; a preload history);
 - the offset, drift and sensor drift (known functions of time), gain drift;
 - creep (lags of the input and of the driving model's output, inverted with their states);
-- the output bends ``a H^2``, ``c H^3`` of the driving model's output H;
+- the output bends ``a H^2``, ``c H^3`` and the hinge of the driving model's output H;
 - the output maps (smooth saturation, clipping: references beyond the clip are clipped).
 
 - first-order lags before and after the hysteresis (rate dependence): both discretisations
@@ -124,8 +124,8 @@ class _Stepper:
                     j += m
                     driver = _Stepper(p.driver, n)
                 self.creep.append((a, w_in, w_out, driver))
-            elif p.kind in ("output_quadratic", "output_cubic"):
-                self.bends.append((p.power, p._center, p._scale, float(theta[j]), _Stepper(p.driver, n)))
+            elif p.kind in ("output_quadratic", "output_cubic", "output_hinge"):
+                self.bends.append((p, vals.get(p.kind, {}), float(theta[j]), _Stepper(p.driver, n)))
                 j += 1
             else:
                 cols = p.columns(vals.get(p.kind, {}), self.ctx_n)[0]
@@ -153,7 +153,7 @@ class _Stepper:
             if c[3] is not None:
                 c[3].reset()
         for b in self.bends:
-            b[4].reset()
+            b[3].reset()
 
     def _plays(self, x, w, rate, at_rest=False):
         """Play states after trial scaled inputs x (shape (m,)) from states w: (m, N)."""
@@ -216,8 +216,8 @@ class _Stepper:
                 drv_out.append(h)
             else:
                 new_out.append(None)
-        for power, centre, scale, coef, driver in self.bends:
-            u = u + coef * ((driver.output(x) - centre) / scale) ** power
+        for part, bend_values, coef, driver in self.bends:
+            u = u + coef * part.shape((driver.output(x) - part._center) / part._scale, bend_values)
         y = u if self.out is None else self.out.output(u, self.out_values, self.model._ctx)
         y = y + self.after[k]
         if commit:
@@ -234,7 +234,7 @@ class _Stepper:
                     driver.output(x, commit=True)
                     self.lag_out[i] = new_out[i][0].copy()
             for b in self.bends:
-                b[4].output(x, commit=True)
+                b[3].output(x, commit=True)
             self.k += 1
         return y
 
