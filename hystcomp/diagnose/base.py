@@ -49,33 +49,29 @@ def rest_point(rec, n_thresholds=20, thresholds=None):
     more than :data:`REST_BIC`, else the default) and names no effect for it.
     Sets ``rec``'s origin; returns ``(ctx, vp, fit, rest)`` with ``rest`` the
     report's summary (``origin``, ``other``, the two BICs and ``why``)."""
-    first = rec.origin
-    ctx = base_context(rec, n_thresholds, thresholds)
-    vp = VariableProjection(ctx, rec.y, rec.train)
-    fit = vp.evaluate(Structure(), {})
-    rest = {"origin": first, "other": rec.other_origin}
+    default = (rec.origin, *_base_fit(rec, n_thresholds, thresholds))
     if rec.other_origin is None:
-        return ctx, vp, fit, rest
+        return (*default[1:], {"origin": rec.origin, "other": None})
     rec.set_origin(rec.other_origin)
-    ctx2 = base_context(rec, n_thresholds, thresholds)
-    vp2 = VariableProjection(ctx2, rec.y, rec.train)
-    fit2 = vp2.evaluate(Structure(), {})
-    take = fit2.bic < fit.bic - REST_BIC
-    (bic, bic_other) = (fit2.bic, fit.bic) if take else (fit.bic, fit2.bic)
-    if take:
-        vp2.n_evaluations += vp.n_evaluations     # the solves of both base fits are counted
-        ctx, vp, fit = ctx2, vp2, fit2
-        rest["origin"], rest["other"] = rec.other_origin, first
-    else:
-        vp.n_evaluations += vp2.n_evaluations
-        rec.set_origin(first)
-    rec.other_origin = rest["other"]
-    rest["bic"], rest["bic_other"] = round(bic, 1), round(bic_other, 1)
-    rest["why"] = (f"the record never reaches 0: the plays start at rest at {rest['origin']:.4g} (base model BIC "
-                   f"{bic:.1f}), not at {rest['other']:.4g} ({bic_other:.1f}); "
+    other = (rec.other_origin, *_base_fit(rec, n_thresholds, thresholds))
+    take = other[3].bic < default[3].bic - REST_BIC
+    (origin, ctx, vp, fit), (not_taken, _, vp_other, fit_other) = (other, default) if take else (default, other)
+    vp.n_evaluations += vp_other.n_evaluations     # the solves of both base fits are counted
+    rec.set_origin(origin)
+    rec.other_origin = not_taken
+    rest = {"origin": origin, "other": not_taken, "bic": round(fit.bic, 1), "bic_other": round(fit_other.bic, 1)}
+    rest["why"] = (f"the record never reaches 0: the plays start at rest at {origin:.4g} (base model BIC "
+                   f"{fit.bic:.1f}), not at {not_taken:.4g} ({fit_other.bic:.1f}); "
                    + ("the other rest point fits better by more than " if take else
                       "the default, kept unless the other fits better by more than ") + f"{REST_BIC:g}")
     return ctx, vp, fit, rest
+
+
+def _base_fit(rec, n_thresholds, thresholds):
+    """The base model's context, engine and fit at the record's current origin."""
+    ctx = base_context(rec, n_thresholds, thresholds)
+    vp = VariableProjection(ctx, rec.y, rec.train)
+    return ctx, vp, vp.evaluate(Structure(), {})
 
 
 #: plays kept above half the input span on a record whose scale exceeds it

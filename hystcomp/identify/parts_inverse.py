@@ -30,6 +30,8 @@ import math
 
 import numpy as np
 
+from .parts_dynamics import _OutputBend
+
 __all__ = ["PartsInverse", "NOT_CAUSAL"]
 
 #: parts without a causal inverse, and what to do instead
@@ -124,7 +126,7 @@ class _Stepper:
                     j += m
                     driver = _Stepper(p.driver, n)
                 self.creep.append((a, w_in, w_out, driver))
-            elif p.kind in ("output_quadratic", "output_cubic", "output_hinge"):
+            elif isinstance(p, _OutputBend):      # a bend of the driving output: its own shape
                 self.bends.append((p, vals.get(p.kind, {}), float(theta[j]), _Stepper(p.driver, n)))
                 j += 1
             else:
