@@ -363,9 +363,12 @@ class Creep(Part):
         names = [f"creep_input_{t:.3g}s" for t in tau]
         if self.driver is not None:
             h = self._driver_output(ctx)
-            # lags minus the driver itself: only the creeping part, no copy of the driver
+            # lags minus the driver itself: only the creeping part, no copy of the driver.  After a
+            # step of the driver a lag minus the driver rises back to 0 from minus the step, so a
+            # coefficient >= 0 keeps the output moving in the step's direction (Kelvin-Voigt
+            # creep: y = h + sum c_i L_i[h] = (1 + sum c_i) h + sum c_i (L_i[h] - h))
             Y = lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0] - h[:, None]
-            X = np.column_stack([X, -Y])
+            X = np.column_stack([X, Y])
             names += [f"creep_output_{t:.3g}s" for t in tau]
         k = X.shape[1]
         return X, np.zeros(k), np.full(k, np.inf), names

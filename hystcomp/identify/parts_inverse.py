@@ -213,7 +213,7 @@ class _Stepper:
                 Lo = self.lag_out[i]
                 Lo = np.broadcast_to(h[:, None], (x.size, a.size)) if Lo is None else Lo[None, :]
                 Lout = a * Lo + (1.0 - a) * h[:, None]
-                u = u + (h[:, None] - Lout) @ w_out
+                u = u + (Lout - h[:, None]) @ w_out
                 new_out.append(Lout)
                 drv_out.append(h)
             else:
