@@ -26,6 +26,9 @@ round's final measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 :data:`HOLDOUT10` (``cases_holdout10.py``) was written after that and run once for the tenth
 round's final measurement (docs/diagnose.md, commit d112ea2, 17 of 30 runs right); it is part of
 :data:`ALL` since.
+:data:`HOLDOUT11` (``cases_holdout11.py``) was written after HOLDOUT10 was measured and run once
+for the eleventh round's measurement (docs/diagnose.md, commit 587953b, 24 of 30 runs right); it is
+part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -40,9 +43,11 @@ from .cases_holdout7 import HOLDOUT7  # noqa: F401
 from .cases_holdout8 import HOLDOUT8  # noqa: F401
 from .cases_holdout9 import HOLDOUT9  # noqa: F401
 from .cases_holdout10 import HOLDOUT10  # noqa: F401
+from .cases_holdout11 import HOLDOUT11  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
-       **HOLDOUT10}
+       **HOLDOUT10, **HOLDOUT11}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
-           "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "ALL"]
+           "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
+           "ALL"]
