@@ -107,8 +107,10 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         drift of no set shape is then judged by interpolation between
         fitted stretches; ``"auto"`` (default) the end, unless its input
         leaves the rest's range by more than 5 % of the span (a record whose
-        amplitude grows to the end): then a block of the same length inside
-        the record whose input stays within the rest's range (see
+        amplitude grows to the end) or, on a timed record, moves more than
+        twice as fast as the rest (the 99th percentiles of the input's rate:
+        a chirp's fast end): then a block of the same length inside the
+        record whose input stays within the rest's range and rate (see
         :func:`hystcomp.diagnose.record.inner_block`; the report says so and
         :attr:`Diagnosis.validation` gives where).  When that leaves the
         record unexplained with no drift or gain drift named, ``"auto"``

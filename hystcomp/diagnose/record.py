@@ -15,6 +15,12 @@ from ..identify._records import _seconds
 #: below 5 %, 67 % above)
 BEYOND = 0.05
 
+#: with ``held_out="auto"`` on a timed record, the held-out part's input may move at
+#: most this many times as fast as the fitted part's (the 99th percentiles of the
+#: smoothed input's rate): beyond, a rate effect is judged by extrapolation in rate,
+#: as a chirp's fastest end or stepped sines' last steps would be
+FASTER = 2.0
+
 #: with ``held_out="auto"``, an inner held-out block starts at a multiple of
 #: this share of the record, not before BLOCK_FIRST of it (the fit needs the
 #: record's first part: the core's virgin loading, the initial state)
@@ -76,12 +82,35 @@ def _beyond_range(v, a, b, span):
     return _range_excess(v[a:b], np.concatenate([v[:a], v[b:]]), span)
 
 
-def inner_block(v, length, span):
+def _fast(r):
+    """The input's fast rate: the 99th percentile of ``|r|``."""
+    return float(np.percentile(np.abs(r), 99)) if r.size else 0.0
+
+
+def _rate_excess(r, a, b):
+    """How many times as fast the input moves in r[a:b] as in the rest (the
+    99th percentiles of ``|r|``; 0 when the rest does not move)."""
+    rest = _fast(np.concatenate([r[:a], r[b:]]))
+    return _fast(r[a:b]) / rest if rest > 0 else 0.0
+
+
+def _excess(v, a, b, span, rate=None):
+    """How far the block v[a:b] leaves the rest's input range and (with
+    `rate`) rate, in units of the allowed :data:`BEYOND` and :data:`FASTER`:
+    at most 1 when it leaves neither."""
+    x = _beyond_range(v, a, b, span) / BEYOND
+    if rate is not None:
+        x = max(x, _rate_excess(rate, a, b) / FASTER)
+    return x
+
+
+def inner_block(v, length, span, rate=None):
     """Start of a held-out block of `length` samples inside the record whose
-    input stays within the rest's range (to :data:`BEYOND` of the span): the
-    latest such start at a multiple of :data:`BLOCK_STEP` of the record from
-    :data:`BLOCK_FIRST` of it on; when none does, the start whose block leaves
-    the range least, or None when every block does.
+    input stays within the rest's range (to :data:`BEYOND` of the span) and,
+    given the input's `rate`, moves at most :data:`FASTER` times as fast as
+    the rest: the latest such start at a multiple of :data:`BLOCK_STEP` of
+    the record from :data:`BLOCK_FIRST` of it on; when none does, the start
+    whose block leaves them least, or None when there is no start.
 
     Parameters
     ----------
@@ -91,6 +120,8 @@ def inner_block(v, length, span):
         Samples held out.
     span : float
         The input's span.
+    rate : ndarray, optional
+        The input's rate (a timed record).
 
     Returns
     -------
@@ -105,17 +136,29 @@ def inner_block(v, length, span):
     >>> v = np.linspace(0.5, 1.0, 1000) * np.sin(np.linspace(0, 60, 1000))
     >>> inner_block(v, 300, float(np.ptp(v)))
     600
+
+    Stepped sines, 1 Hz and then 4 Hz over the last 30 %: held out, the end
+    moves four times as fast as the rest; the block 650 ... 949 leaves fast
+    samples in the fitted part:
+
+    >>> t = np.linspace(0.0, 10.0, 1000, endpoint=False)
+    >>> v = np.where(t < 7.0, np.sin(2 * np.pi * t), np.sin(2 * np.pi * 4 * t))
+    >>> rate = np.gradient(v, t)
+    >>> round(_rate_excess(rate, 700, 1000), 1)
+    4.0
+    >>> inner_block(v, 300, float(np.ptp(v)), rate=rate)
+    650
     """
     n = v.size
     step = max(int(round(BLOCK_STEP * n)), 1)
     starts = list(range(int(round(BLOCK_FIRST * n)), n - length, step))   # each block ends before n
     if not starts:
         return None
-    out = [(_beyond_range(v, a, a + length, span), a) for a in starts]
-    inside = [a for b, a in out if b <= BEYOND]
+    out = [(_excess(v, a, a + length, span, rate), a) for a in starts]
+    inside = [a for x, a in out if x <= 1.0]
     if inside:
         return max(inside)
-    b, a = min(out)
+    x, a = min(out)
     return a
 
 
@@ -130,9 +173,11 @@ class Record:
     The held-out part is ``validation`` of the record: its end
     (``held_out="last"``), or, with ``held_out="auto"``, its end unless the
     end drives the input more than :data:`BEYOND` of the span beyond the
-    rest's range (a record whose amplitude grows); then the block of the
-    same length inside the record chosen by :func:`inner_block` (when it
-    leaves the range less than half as far as the end does).  With
+    rest's range (a record whose amplitude grows) or, on a timed record,
+    moves it more than :data:`FASTER` times as fast as the rest (a chirp's
+    fast end); then the block of the same length inside the record chosen
+    by :func:`inner_block` (when it leaves the range and rate less than half
+    as far as the end does, in units of the two limits).  With
     ``held_out="blocks"``, :data:`N_BLOCKS` blocks spread over the record
     (:func:`spread_blocks`).  The held-out samples are those of
     :attr:`blocks`, all within ``held_start ... held_end - 1``.
@@ -181,16 +226,20 @@ class Record:
         # the end leaves the rest's input range, or (blocks) blocks spread over it
         #: how far the end block would have left the range when the block was moved (else 0)
         self.held_moved_from_end = 0.0
+        #: how many times as fast the end's input moved as the rest's when the block was moved (else 0)
+        self.held_moved_faster = 0.0
         #: the held-out blocks, (first sample, sample after the last) each
         self.blocks = [(self.k_val, n)]
         if held_out == "blocks":
             self.blocks = spread_blocks(n, n - self.k_val)
         elif held_out == "auto":
-            end = _beyond_range(self.v, self.k_val, n, self.span)
-            if end > BEYOND:
-                a = inner_block(self.v, n - self.k_val, self.span)
-                if a is not None and _beyond_range(self.v, a, a + n - self.k_val, self.span) < 0.5 * end:
-                    self.held_moved_from_end = end
+            rate = None if self.t is None else np.gradient(_smooth(self.v, 5), self.t)
+            end = _excess(self.v, self.k_val, n, self.span, rate)
+            if end > 1.0:
+                a = inner_block(self.v, n - self.k_val, self.span, rate)
+                if a is not None and _excess(self.v, a, a + n - self.k_val, self.span, rate) < 0.5 * end:
+                    self.held_moved_from_end = _beyond_range(self.v, self.k_val, n, self.span)
+                    self.held_moved_faster = 0.0 if rate is None else _rate_excess(rate, self.k_val, n)
                     self.blocks = [(a, a + n - self.k_val)]
         self.train = np.ones(n, bool)
         for a, b in self.blocks:
@@ -288,8 +337,13 @@ class Record:
             return (f"held out: {len(self.blocks)} blocks spread over the record, {where}{unit} (a time "
                     "effect of no set shape is judged by interpolation between fitted stretches)")
         a, b = self.held_interval()
-        return (f"held out: {a:g} ... {b:g}{unit} inside the record, not its end (the end drives the input "
-                f"{100 * self.held_moved_from_end:.0f} % of its span beyond the rest's range)")
+        why = []
+        if self.held_moved_from_end > BEYOND:
+            why.append(f"drives the input {100 * self.held_moved_from_end:.0f} % of its span beyond the rest's range")
+        if self.held_moved_faster > FASTER:
+            why.append(f"moves the input {self.held_moved_faster:.3g} times as fast as the rest")
+        return (f"held out: {a:g} ... {b:g}{unit} inside the record, not its end (the end "
+                + " and ".join(why) + ")")
 
 
 def _hf_noise(x):

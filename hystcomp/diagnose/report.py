@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 8
+SCHEMA_VERSION = 9
 
 
 def _jsonable(x):
@@ -179,6 +179,11 @@ class Diagnosis:
         would have driven the input beyond the rest's range (a share of the
         span, above 0.05), which is why a block inside the record was held
         out instead (``held_out="auto"``; :attr:`validation` gives where).
+    held_out_moved_faster : float
+        0 when the held-out part is the record's end; else how many times
+        as fast the end's input moved as the rest's (the 99th percentiles of
+        the rate; above 2 the end was moved for its rate, the analogue of
+        the input range for rate effects).
     model : PartsModel
         The final model, built from the same parts as the fit;
         ``model.simulate(v)`` reproduces :attr:`rms_heldout`.
@@ -199,6 +204,7 @@ class Diagnosis:
 
     held_out_beyond_fitted_range = 0.0
     held_out_moved = 0.0
+    held_out_moved_faster = 0.0
     other_split = None
     held_out_blocks = ()
     rest = None
@@ -220,9 +226,10 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 8; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 9; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
-        ``held_out_blocks`` and ``other_split``, 8 ``rest``).
+        ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
+        ``held_out_moved_faster``).
 
         Returns
         -------
@@ -244,7 +251,8 @@ class Diagnosis:
             "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
             "other_split": self.other_split, "rest": self.rest,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
-            "held_out_moved": self.held_out_moved, "steps": steps, "untested": dict(self.untested),
+            "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
+            "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
             "model": self.model.describe(),
@@ -291,7 +299,7 @@ class Diagnosis:
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
-        if self.held_out_moved > 0 or len(self.held_out_blocks) > 1:
+        if self.held_out_moved > 0 or self.held_out_moved_faster > 0 or len(self.held_out_blocks) > 1:
             lines.append("  " + self._rec.held_out_line())
         if self.other_split is not None:
             o = self.other_split

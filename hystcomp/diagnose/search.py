@@ -466,7 +466,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,
                 validation=rec.held_interval(), held_out_blocks=rec.held_blocks(), rest=rest,
                 held_out_beyond_fitted_range=beyond,
-                held_out_moved=rec.held_moved_from_end,
+                held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)

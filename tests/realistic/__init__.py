@@ -29,6 +29,9 @@ round's final measurement (docs/diagnose.md, commit d112ea2, 17 of 30 runs right
 :data:`HOLDOUT11` (``cases_holdout11.py``) was written after HOLDOUT10 was measured and run once
 for the eleventh round's measurement (docs/diagnose.md, commit 587953b, 24 of 30 runs right); it is
 part of :data:`ALL` since.
+:data:`HOLDOUT12` (``cases_holdout12.py``) was written after HOLDOUT11 was measured and run once
+for the twelfth round's measurement (docs/diagnose.md, commit 8ee476d, 26 of 30 runs right); it is
+part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -44,10 +47,11 @@ from .cases_holdout8 import HOLDOUT8  # noqa: F401
 from .cases_holdout9 import HOLDOUT9  # noqa: F401
 from .cases_holdout10 import HOLDOUT10  # noqa: F401
 from .cases_holdout11 import HOLDOUT11  # noqa: F401
+from .cases_holdout12 import HOLDOUT12  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
-       **HOLDOUT10, **HOLDOUT11}
+       **HOLDOUT10, **HOLDOUT11, **HOLDOUT12}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
-           "ALL"]
+           "HOLDOUT12", "ALL"]
