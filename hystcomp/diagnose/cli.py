@@ -294,8 +294,8 @@ def add_arguments(parser):
                         help="which part is held out: the end (last); five blocks spread over the record "
                              "(blocks: a drift of no set shape is judged by interpolation); or auto (default): "
                              "the end unless its input leaves the rest's range by more than 5 %% of the span "
-                             "or moves over twice as fast as the rest, then a block inside the record, re-judged on blocks when that leaves the record "
-                             "unexplained with no drift named")
+                             "or moves over twice as fast as the rest, then a block inside the record, re-judged on "
+                             "blocks when that leaves the record unexplained with no drift named")
     parser.add_argument("--max-effects", type=int, default=4, help="at most this many effects (default 4)")
     parser.add_argument("--quiet", action="store_true", help="no progress lines on stderr")
     return parser

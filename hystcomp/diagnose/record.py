@@ -222,6 +222,9 @@ class Record:
         self.span = self.vmax - self.vmin
         if self.span <= 0:
             raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
+        # a smoothed input and its rate (per second, or per sample without a time axis)
+        self.vs = _smooth(self.v, 5)
+        self.rate = np.gradient(self.vs) if self.dt is None else np.gradient(self.vs, self.dt)
         # the held-out part: the end, or (auto) a block inside the record when
         # the end leaves the rest's input range, or (blocks) blocks spread over it
         #: how far the end block would have left the range when the block was moved (else 0)
@@ -233,7 +236,7 @@ class Record:
         if held_out == "blocks":
             self.blocks = spread_blocks(n, n - self.k_val)
         elif held_out == "auto":
-            rate = None if self.t is None else np.gradient(_smooth(self.v, 5), self.t)
+            rate = None if self.t is None else self.rate
             end = _excess(self.v, self.k_val, n, self.span, rate)
             if end > 1.0:
                 a = inner_block(self.v, n - self.k_val, self.span, rate)
@@ -264,11 +267,9 @@ class Record:
         #: the other rest point the search tries (None on a record that reaches 0)
         self.other_origin = None if contains else (float(self.v[0]) if near else 0.0)
         self.duration = None if self.dt is None else n * self.dt
-        # input noise (the input's high-frequency part) and a smoothed input
+        # input noise (the input's high-frequency part)
         self.input_noise = _input_noise(self.v)
-        self.vs = _smooth(self.v, 5)
         if self.dt is not None:
-            self.rate = np.gradient(self.vs, self.dt)
             self.holds = find_holds(self.v, self.dt, self.span)
             P = np.abs(np.fft.rfft(self.v - self.v.mean())) ** 2
             f = np.fft.rfftfreq(n, self.dt)
@@ -277,7 +278,6 @@ class Record:
             band = (f >= self.f_peak / 1.5) & (f <= self.f_peak * 1.5)
             self.peak_share = float(P[band].sum() / P.sum()) if P.sum() > 0 else 1.0
         else:
-            self.rate = np.gradient(self.vs)
             self.holds = []
             self.f_peak, self.peak_share = 0.0, 1.0
         self.direction = np.sign(self.rate)
