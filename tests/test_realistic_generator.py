@@ -327,6 +327,36 @@ def _assert_measured_set(H, prefix, effects):
     return first
 
 
+#: the kinds a later set's case names start with (after the set's prefix)
+KINDS = ("clean_", "oov_", "pair_", "creep_", "rate_", "drift_", "gain_drift_", "asymmetry_", "saturation_",
+         "delay_", "initial_state_")
+
+
+def _assert_set_layout(H, prefix, first, rec, monitored, others_carry_drive=False):
+    """What HOLDOUT11 and later promise beyond :func:`_assert_measured_set` (`first` its
+    result, `rec(short_name, seed)` a record): names that start with their kind; inputs that
+    differ between seeds 0 and 2 too; the input monitor's noise as stated in `monitored` (short
+    name -> fraction of the drive's span: its sample std within 10 %), and with
+    `others_carry_drive` no noise on the others' input; seven single-effect cases of verdict
+    "either", one per family."""
+    assert all(n[len(prefix):].startswith(KINDS) for n in H)
+    for name in H:
+        short = name[len(prefix):]
+        recs = [rec(short, s) for s in range(3)]
+        # every pair of seeds differs in its input (_assert_measured_set checks neighbouring seeds)
+        va, vb = recs[0].v, recs[2].v
+        assert len(va) != len(vb) or not np.allclose(va, vb, atol=0.5)
+        for r in recs:
+            if short in monitored:
+                drive = r.extra["drive"]
+                assert np.std(r.v - drive) == pytest.approx(monitored[short] * np.ptp(drive), rel=0.1)
+            elif others_carry_drive:
+                assert "drive" not in r.extra or np.array_equal(r.extra["drive"], r.v)
+    singles = [r for r in first.values() if len(r.expect_effects) == 1]
+    assert len(singles) == 7 and all(r.expect_verdict == "either" for r in singles)
+    assert len({f for r in singles for f in family(r.expect_effects)}) == 7
+
+
 def test_holdout8_was_measured_joined_all_and_is_well_formed():
     # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
     _assert_measured_set(HOLDOUT8, "holdout8_", {

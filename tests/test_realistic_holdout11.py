@@ -19,7 +19,7 @@ from scipy.signal import bessel, freqs, lsim, welch
 from realistic import HOLDOUT11, family
 from realistic import cases_holdout11 as h11
 from realistic import mechanisms as me
-from test_realistic_generator import _assert_measured_set, _lag_samples
+from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
 
 P = "holdout11_"
 #: the effect names the set expects (seven families: gain_drift and drift are one, as are the saturations)
@@ -51,25 +51,9 @@ def test_holdout11_was_measured_joined_all_and_is_well_formed():
     # _assert_measured_set of test_realistic_generator, and more; measured once in round 11
     # (24/30, commit 587953b), in ALL since
     first = _assert_measured_set(HOLDOUT11, P, EFFECTS)
-    prefixes = ("clean_", "oov_", "pair_", "creep_", "rate_", "drift_", "gain_drift_", "asymmetry_",
-                "saturation_", "delay_", "initial_state_")
-    assert all(n[len(P):].startswith(prefixes) for n in HOLDOUT11)
-    for name in HOLDOUT11:
-        short = name[len(P):]
-        recs = [_rec(short, s) for s in range(3)]
-        # every pair of seeds differs in its input (_assert_measured_set checks neighbouring seeds)
-        va, vb = recs[0].v, recs[2].v
-        assert len(va) != len(vb) or not np.allclose(va, vb, atol=0.5)
-        # the monitor noise as stated (its sample std within 10 % of the fraction of the drive's span)
-        if short in MONITORED:
-            for r in recs:
-                drive = r.extra["drive"]
-                assert np.std(r.v - drive) == pytest.approx(MONITORED[short] * np.ptp(drive), rel=0.1)
+    # kinds in the names, inputs, monitor noise, one effect of verdict "either" for seven families
+    _assert_set_layout(HOLDOUT11, P, first, _rec, MONITORED)
     assert len(family(EFFECTS)) == 7
-    # one effect and the verdict "either" for the other seven, one family each, all seven covered
-    singles = [r for r in first.values() if len(r.expect_effects) == 1]
-    assert len(singles) == 7 and all(r.expect_verdict == "either" for r in singles)
-    assert len({f for r in singles for f in family(r.expect_effects)}) == 7
     assert first[P + "pair_gain_drift_delay_self_heating_dac_beat_1300hz"].expect_verdict == "either"
     assert sum(r.v.min() > -1 and r.v.max() > 55 for r in first.values()) == UNIPOLAR
     assert sum(r.v.min() < -30 and r.v.max() < 65 for r in first.values()) == 10 - UNIPOLAR

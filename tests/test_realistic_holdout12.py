@@ -22,7 +22,7 @@ from scipy.special import gammainc
 from realistic import HOLDOUT12, family
 from realistic import mechanisms as me
 from realistic import mechanisms12 as m12
-from test_realistic_generator import _assert_measured_set, _lag_samples
+from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
 
 P = "holdout12_"
 #: the effect names the set expects (seven families)
@@ -54,30 +54,12 @@ def test_holdout12_was_measured_joined_all_and_is_well_formed():
     # (26/30, commit 8ee476d), in ALL since
     H = HOLDOUT12
     first = _assert_measured_set(H, P, EFFECTS)
-    for name in H:
-        short = name[len(P):]
-        recs = [_rec(short, s) for s in range(3)]
-        # every pair of seeds differs in its input (_assert_measured_set checks neighbouring seeds)
-        va, vb = recs[0].v, recs[2].v
-        assert len(va) != len(vb) or not np.allclose(va, vb, atol=0.5)
-        # the monitor noise as stated (its sample std within 10 % of the fraction of the drive's span); the
-        # other records carry the clean drive
-        for r in recs:
-            if short in MONITORED:
-                drive = r.extra["drive"]
-                assert np.std(r.v - drive) == pytest.approx(MONITORED[short] * np.ptp(drive), rel=0.1)
-            else:
-                assert "drive" not in r.extra or np.array_equal(r.extra["drive"], r.v)
+    # kinds in the names, inputs, monitor noise (the other records carry the clean drive), one effect
+    # of verdict "either" for seven families
+    _assert_set_layout(H, P, first, _rec, MONITORED, others_carry_drive=True)
     assert len(family(EFFECTS)) == 7
-    # one effect and the verdict "either" for seven, one family each, all seven covered
-    singles = [r for r in first.values() if len(r.expect_effects) == 1]
-    assert len(singles) == 7 and all(r.expect_verdict == "either" for r in singles)
-    assert len({f for r in singles for f in family(r.expect_effects)}) == 7
     pair = first[P + "pair_initial_state_creep_cole_davidson_stepped_sine_380hz"]
     assert pair.expect_effects == {"initial_state", "creep"} and pair.expect_verdict == "either"
-    prefixes = ("clean_", "oov_", "pair_", "creep_", "rate_", "drift_", "gain_drift_", "asymmetry_", "saturation_",
-                "delay_", "initial_state_")
-    assert all(n[len(P):].startswith(prefixes) for n in H)
     # three unipolar (0 ... 100 V), seven bipolar (about -50 ... 50 V), for every seed
     for name in H:
         for s in range(3):
