@@ -174,6 +174,11 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     base_pt = cur
     sigma, noise_info = noise_floor(rec, rec.y - cur.prediction)
     ctx.noise = sigma
+    # "explained" asks for the held-out RMS within EXPLAINED noise floors by the
+    # floor's own standard error: a floor estimated a little high does not pass
+    # a residual a little above the bound
+    se = noise_info["relative_standard_error"]
+    explained_limit = EXPLAINED * (1.0 - se)
     rms0 = rms_val(cur)
     if rec.held_out_in_middle:
         say(rec.held_out_line())
@@ -377,7 +382,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
-        if rms_val(cur) <= EXPLAINED * sigma and not any(x["present"] for x in ev.values()):
+        if rms_val(cur) <= explained_limit * sigma and not any(x["present"] for x in ev.values()):
             stopped = "the residual is at the noise floor with no signature left"
             break
     else:
@@ -397,9 +402,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     rms_final = _rms((sgn * rec.y - model.simulate(rec.v))[held])
     present = {k: x for k, x in final_ev.items() if x["present"] and k not in untested}
     remaining = {}
-    if rms_final > EXPLAINED * sigma:
-        remaining["held_out"] = (f"held-out RMS {rms_final:.4g} is {rms_final / sigma:.2f} x the noise floor "
-                                 f"(explained needs <= {EXPLAINED})")
+    if rms_final > explained_limit * sigma:
+        remaining["held_out"] = (f"held-out RMS {rms_final:.4g} is {rms_final / sigma:.3g} x the noise floor "
+                                 f"(explained needs <= {explained_limit:.3g}: {EXPLAINED} less the floor's "
+                                 f"standard error, {100 * se:.2g} %)")
     for k, x in present.items():
         remaining[k] = f"{x['where']}: {x['signature']} ({x['statistic']:.2f} > {x['threshold']:.2f})"
     # a residual correlated from sample to sample makes the high-frequency noise
