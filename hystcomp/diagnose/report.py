@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 9
+SCHEMA_VERSION = 10
 
 
 def _jsonable(x):
@@ -98,11 +98,17 @@ class Diagnosis:
     Attributes
     ----------
     verdict : str
-        ``"explained"`` (held-out RMS within 1.5 noise floors and no
-        signature left in the residual) or ``"unexplained"``.
+        ``"explained"`` (held-out RMS within :attr:`explained_limit` noise
+        floors and no signature left in the residual) or ``"unexplained"``.
     noise_floor : float
         Noise floor estimated from the record [output units] (how:
-        ``noise_info``).
+        ``noise_info``; its relative standard error:
+        ``noise_info["relative_standard_error"]``).
+    explained_limit : float
+        The bound on an "explained" held-out RMS, in noise floors: 1.5 less
+        the floor's relative standard error (1.5 (1 - se)), so that a floor
+        estimated a little high does not pass a residual a little above
+        1.5 true noise levels.
     effects : list of str
         The effects named, in order.
     tentative : list of str
@@ -203,6 +209,7 @@ class Diagnosis:
     """
 
     held_out_beyond_fitted_range = 0.0
+    explained_limit = 1.5
     held_out_moved = 0.0
     held_out_moved_faster = 0.0
     other_split = None
@@ -226,10 +233,11 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 9; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 10; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
-        ``held_out_moved_faster``).
+        ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
+        floor's ``relative_standard_error`` in ``noise_floor_method``).
 
         Returns
         -------
@@ -243,6 +251,7 @@ class Diagnosis:
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
             "noise_floor_pct": self._pct(self.noise_floor), "noise_floor_method": self.noise_info,
+            "explained_limit": self.explained_limit,
             "effects": list(self.effects), "tentative_effects": list(self.tentative),
             "ambiguous": dict(self.ambiguous),
             "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,

@@ -466,7 +466,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     if beyond > BEYOND:
         say("caution: " + caution(beyond))
     say(f"done in {time.perf_counter() - t0:.1f} s: {verdict}; effects {chosen or 'none'}")
-    return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, effects=chosen, steps=steps,
+    return dict(verdict=verdict, noise_floor=sigma, noise_info=noise_info, explained_limit=explained_limit,
+                effects=chosen, steps=steps,
                 tentative=tentative, misfit_share_explained=share, ambiguous=ambiguous,
                 untested=untested, stopped=stopped, remaining=remaining, model=model, base_model=base_model,
                 rms_before=rms0, rms_after=rms_final, rms_heldout=rms_final, output_span=rec.y_span,

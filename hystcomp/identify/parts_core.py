@@ -264,7 +264,11 @@ class Saturation(Part):
 class InitialState(Part):
     """Unknown memory at the record's start: the plays start from the
     state a preload history leaves, the virgin state driven to ``u1`` and
-    ``u2`` (scaled input) before the first sample.
+    ``u2`` (scaled input) before the first sample.  Both may lie up to one
+    input span beyond the record's input range (an actuator parked after a
+    run to the top of its stroke and recorded under a smaller drive: a
+    quarter span, the bound until round 13, left a run to 1.8 times the
+    record's largest input 2-7 noise floors at the start).
 
     Examples
     --------
