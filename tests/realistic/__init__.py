@@ -32,6 +32,8 @@ part of :data:`ALL` since.
 :data:`HOLDOUT12` (``cases_holdout12.py``) was written after HOLDOUT11 was measured and run once
 for the twelfth round's measurement (docs/diagnose.md, commit 8ee476d, 26 of 30 runs right); it is
 part of :data:`ALL` since.
+:data:`HOLDOUT13` (``cases_holdout13.py``) was written after HOLDOUT12 was measured and run once
+for the thirteenth round's measurement (docs/diagnose.md); it is part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -48,10 +50,11 @@ from .cases_holdout9 import HOLDOUT9  # noqa: F401
 from .cases_holdout10 import HOLDOUT10  # noqa: F401
 from .cases_holdout11 import HOLDOUT11  # noqa: F401
 from .cases_holdout12 import HOLDOUT12  # noqa: F401
+from .cases_holdout13 import HOLDOUT13  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
-       **HOLDOUT10, **HOLDOUT11, **HOLDOUT12}
+       **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
-           "HOLDOUT12", "ALL"]
+           "HOLDOUT12", "HOLDOUT13", "ALL"]
