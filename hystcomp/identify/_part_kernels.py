@@ -102,6 +102,26 @@ def fractional_delay(x, d, out):
 
 
 @njit(cache=True)
+def slew_limit(x, step, out):
+    """out[k] follows x at most `step` per sample (a slew-rate limit: an
+    amplifier whose output current is limited drives the capacitive stack at
+    ``dV/dt <= I_max / C``), from out[0] = x[0]."""
+    n = x.size
+    if n == 0:
+        return
+    u = x[0]
+    out[0] = u
+    for k in range(1, n):
+        d = x[k] - u
+        if d > step:
+            d = step
+        elif d < -step:
+            d = -step
+        u += d
+        out[k] = u
+
+
+@njit(cache=True)
 def column_ranges(a, k):
     """``max - min`` of each of the first `k` columns of `a` (rows in C
     order: one pass, where NumPy's two reductions along the rows of a

@@ -49,10 +49,10 @@ from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICor
                          RateThresholds, Saturation, ViscousPlays)
 from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
-                             SlowDrift, SlowGainDrift)
+                             SlewLimit, SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
-__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "RateThresholds", "ViscousPlays", "LevelThresholds",
+__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

@@ -8,10 +8,10 @@ import math
 import numpy as np
 
 from ..effects import LinearStage, lag_bank
-from ._part_kernels import fractional_delay
+from ._part_kernels import fractional_delay, slew_limit
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["Delay", "InputLag", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+__all__ = ["Delay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "OutputQuadratic", "OutputCubic", "OutputHinge", "Drift", "SlowDrift", "SensorDrift"]
 
 
@@ -102,6 +102,52 @@ class InputLag(_Lag):
     def transform(self, x, values, ctx):
         # at rest at the first sample (the record starts in a steady state)
         return lag_bank(x, [values["time_constant"]], ctx.dt, state=[x[0]])[0][:, 0].copy()
+
+
+@register
+class SlewLimit(Part):
+    """A slew-rate limit before the hysteresis: the actuator's input follows
+    the recorded command at most ``S`` per second, ``u[k] = u[k-1] +
+    clip(v[k] - u[k-1], -S dt, S dt)`` from ``u[0] = v[0]``.  A piezo
+    amplifier whose output current is limited charges the stack's
+    capacitance ``C`` at most at ``S = I_max / C`` (Fleming & Leang, *Design,
+    Modeling and Control of Nanopositioning Systems*, 2014, ch. 13): fast or
+    large commands fall behind and are cut to triangles, slow ones pass
+    unchanged, so the loop widens with rate and amplitude together, unlike
+    a linear lag's.  Parameter: ``relative_slew_rate``, ``S`` over the
+    record's largest input rate (0.02 ... 1; at 1 nothing is limited).
+
+    Examples
+    --------
+    >>> ctx = Context(np.array([0.0, 1.0, 1.0, 1.0, 0.0]), 1.0, 0.0, 1.0, 5.0)
+    >>> SlewLimit().transform(ctx.x, {"relative_slew_rate": 0.4}, ctx).round(6).tolist()
+    [0.0, 0.4, 0.8, 1.0, 0.6]
+    """
+
+    effect = "rate_dependence"
+    kind = "input_slew"
+    slot = "input"
+    order = 30
+    needs_time = True
+    description = "slew-rate limit before the hysteresis (a current-limited amplifier)"
+
+    def _rate_max(self, ctx):
+        return float(np.max(np.abs(np.diff(ctx.x)))) / ctx.dt if ctx.n > 1 else 1.0
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("relative_slew_rate", 0.5, 0.02, 1.0, True)]
+
+    def initial_values(self, ctx, kinds):
+        return [{"relative_slew_rate": r} for r in (0.05, 0.15, 0.4, 0.8)]
+
+    def transform(self, x, values, ctx):
+        out = np.empty_like(x)
+        step = float(values["relative_slew_rate"]) * self._rate_max(ctx) * ctx.dt
+        slew_limit(np.ascontiguousarray(x, dtype=np.float64), step, out)
+        return out
+
+    def describe(self, values):
+        return {"part": self.description, "relative_slew_rate": float(f"{values['relative_slew_rate']:.4g}")}
 
 
 # ----------------------------------------------------------------------------
