@@ -8,7 +8,7 @@ import pytest
 from hystcomp.datasets import hidden_effect_data
 from hystcomp.diagnose import diagnose
 from hystcomp.identify import fit_weights
-from hystcomp.identify.parts import Context, Delay, GainDrift, InputLag, OutputLag, OutputResonance
+from hystcomp.identify.parts import Context, Delay, GainDrift, InputLag, OutputLag, OutputResonance, SlewLimit
 from hystcomp.identify.search import PartsModel, Structure, VariableProjection
 
 DT = 0.01
@@ -67,7 +67,8 @@ def _model_with(parts, values, y_of_v, n=400):
     return PartsModel(st, pt.values, pt.theta, ctx, pt.names), v
 
 
-@pytest.mark.parametrize("part,word", [(Delay(), "dead time"), (OutputResonance(), "unstable")])
+@pytest.mark.parametrize("part,word", [(Delay(), "dead time"), (OutputResonance(), "unstable"),
+                                       (SlewLimit(), "out of reach")])
 def test_parts_without_a_causal_inverse_are_named(part, word):
     ctx = Context(np.zeros(4), 0.01, 0.0, 1.0, 4.0)
     values = {part.kind: {p.name: p.initial for p in part.parameters(ctx, {part.kind})}}

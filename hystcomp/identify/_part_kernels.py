@@ -102,6 +102,26 @@ def fractional_delay(x, d, out):
 
 
 @njit(cache=True)
+def drifting_delay(x, d0, d1, out):
+    """out[k] = x at sample k - d_k, d_k = d0 + (d1 - d0) k / (n - 1) (linear
+    interpolation; x[0] before the start): a dead time that changes linearly
+    along the record."""
+    n = x.size
+    for k in range(n):
+        d = d0 + (d1 - d0) * k / (n - 1) if n > 1 else d0
+        s = k - d
+        if s <= 0.0:
+            out[k] = x[0]
+        else:
+            j = int(math.floor(s))
+            f = s - j
+            if j + 1 < n:
+                out[k] = (1.0 - f) * x[j] + f * x[j + 1]
+            else:
+                out[k] = x[n - 1]
+
+
+@njit(cache=True)
 def slew_limit(x, step, out):
     """out[k] follows x at most `step` per sample (a slew-rate limit: an
     amplifier whose output current is limited drives the capacitive stack at

@@ -47,12 +47,12 @@ importing this module registers every built-in part, in one place.
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
 from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, Saturation, ViscousPlays)
-from .parts_dynamics import (Creep, Delay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
+from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
-__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "LevelThresholds",
+__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

@@ -8,10 +8,10 @@ import math
 import numpy as np
 
 from ..effects import LinearStage, lag_bank
-from ._part_kernels import fractional_delay, slew_limit
+from ._part_kernels import drifting_delay, fractional_delay, slew_limit
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["Delay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+__all__ = ["Delay", "DriftingDelay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "OutputQuadratic", "OutputCubic", "OutputHinge", "Drift", "SlowDrift", "SensorDrift"]
 
 
@@ -59,6 +59,45 @@ class Delay(Part):
 
     def describe(self, values):
         return {"part": self.description, "delay_samples": float(f"{values['delay']:.4g}")}
+
+
+@register
+class DriftingDelay(Delay):
+    """A dead time that changes linearly along the record, from ``delay`` samples
+    at the first sample to ``delay_end`` at the last (fractional samples, linear
+    interpolation): a sensor recorded on its own clock, which runs fast or slow
+    against the drive's by a frequency offset ``eps`` (crystal tolerances are
+    1e-5 ... 1e-3), so the two drift apart by ``eps`` samples a sample (the
+    reason for IEEE 1588 time synchronisation).  Parameters: ``delay``,
+    ``delay_end`` [samples].
+
+    Examples
+    --------
+    >>> ctx = Context(np.arange(5.0), 1.0, 0.0, 1.0, 5.0)
+    >>> DriftingDelay().transform(ctx.x, {"delay": 0.0, "delay_end": 2.0}, ctx).tolist()
+    [0.0, 0.5, 1.0, 1.5, 2.0]
+    """
+
+    kind = "delay_drift"
+    description = "dead time drifting linearly along the record (unsynchronised clocks)"
+    occam_rank = 1
+
+    def parameters(self, ctx, kinds):
+        return [Parameter("delay", 1.0, 0.0, self._max(ctx), False),
+                Parameter("delay_end", 1.0, 0.0, self._max(ctx), False)]
+
+    def initial_values(self, ctx, kinds):
+        hi = self._max(ctx)
+        return [{"delay": a, "delay_end": min(f * a, hi)} for a in np.geomspace(0.5, hi, 4) for f in (0.5, 1.0, 2.0)]
+
+    def transform(self, x, values, ctx):
+        out = np.empty_like(x)
+        drifting_delay(np.ascontiguousarray(x), float(values["delay"]), float(values["delay_end"]), out)
+        return out
+
+    def describe(self, values):
+        return {"part": self.description, "delay_samples": float(f"{values['delay']:.4g}"),
+                "delay_end_samples": float(f"{values['delay_end']:.4g}")}
 
 
 def _lag_bounds(ctx):

@@ -39,6 +39,7 @@ NOT_CAUSAL = {
     "delay": "a dead time cannot be inverted causally; shift the reference earlier by the delay (preview)",
     "output_resonance": ("the resonance's bilinear (Tustin) discretisation puts both zeros at z = -1, so its "
                          "inverse is unstable; compensate the mode with a notch in the loop instead"),
+    "delay_drift": "a dead time cannot be inverted causally; shift the reference earlier by the delay (preview)",
     "input_slew": ("a slew-rate limit cannot be inverted: a reference that asks for a faster input than the "
                    "limit is out of reach; keep the reference's rate below the limit and invert the model "
                    "without it"),
