@@ -1,6 +1,6 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
-Every case of the tuning, held-out and HOLDOUT2-12 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-13 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -45,23 +45,24 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# Met since round 12: measured with three seeds, 392/435 (90.1 %) over the thirteen sets as committed
-# (366/405, 90.4 %, over the twelve sets before HOLDOUT12 joined); on each fresh set when it was
-# fresh 21/36 (held-out), 17/30 (HOLDOUT2), 19/30 (HOLDOUT3), 28/30 (HOLDOUT4), 20/33 (HOLDOUT5),
-# 21/30 (HOLDOUT6), 22/30 (HOLDOUT7), 18/30 (HOLDOUT8), 24/30 (HOLDOUT9), 17/30 (HOLDOUT10), 24/30
-# (HOLDOUT11) and 26/30 (HOLDOUT12); 132/145 (91.0 %) here at seed 0, where 131 are needed
-# (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread); a run decided
-# differently under another BLAS build could move it by one.
+# Met at seed 0 since round 12: 140/155 (90.3 %) here in round 13, where 140 are needed (139.5).
+# Over three seeds the fourteen sets give 415/465 (89.2 %): the issue's 90 % is missed there since
+# HOLDOUT13 joined (20/30 with round 13's parts, 17/30 when it was fresh). On each fresh set when it
+# was fresh: 21/36 (held-out), 17/30 (HOLDOUT2), 19/30 (HOLDOUT3), 28/30 (HOLDOUT4), 20/33
+# (HOLDOUT5), 21/30 (HOLDOUT6), 22/30 (HOLDOUT7), 18/30 (HOLDOUT8), 24/30 (HOLDOUT9), 17/30
+# (HOLDOUT10), 24/30 (HOLDOUT11), 26/30 (HOLDOUT12) and 17/30 (HOLDOUT13) (docs/diagnose.md). One BLAS
+# thread per process, as measured (one_blas_thread); a run decided differently under another BLAS
+# build could move it by one.
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 132/145 right at seed 0 in round 12 (91.0 %); at least 124 (85 %), eight
+    # regression guard: 140/155 right at seed 0 in round 13 (90.3 %); at least 132 (85 %), eight
     # runs of margin for decisions that sit on a threshold
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 145
+    assert len(rows) >= 155
     assert right >= 0.85 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
@@ -75,37 +76,28 @@ def test_no_effect_named_on_clean_records(rows):
     assert not named, _table(named)
 
 
-# A thermal offset linear in time plus a sinusoid, named drift on held-out blocks since round 9:
-# 1.49 estimated noise floors left, an estimated floor 1.4 % above the true noise, so 1.51 true
-# noise levels at seed 0 (the broken line of four segments follows a 12 ... 20 s sinusoid only
-# roughly). Kept apart, as a known miss:
-EXPLAINED_AT_THE_BOUND = {"holdout8_drift_linear_plus_sine_repeated_triangles"}
-
-
 def _over(rows):
     return "\n".join(f"{r['case']}: {r['rms_heldout'] / r['true_noise']:.2f}x > {EXPLAINED_LIMIT}x the true noise"
                      for r in rows)
 
 
+# Met since round 13, when "explained" began to ask for the held-out RMS within 1.5 noise
+# floors less the floor's standard error: HOLDOUT8's thermal offset (linear plus a sinusoid)
+# at seed 0 had 1.49 estimated noise floors left, its floor 1.4 % above the true noise, so
+# 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). Over 465 runs of the
+# fourteen sets no "explained" verdict is above 1.5 true noise levels.
 def test_explained_means_within_the_noise(rows):
-    over = [r for r in rows if r["explained_over_limit"] and r["case"] not in EXPLAINED_AT_THE_BOUND]
+    over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
-    # every explained verdict is within 1.5 of the record's own noise floor, the known one too
+    # every explained verdict is within 1.5 of the record's own noise floor (its bound, 1.5 less the floor's
+    # relative standard error, is tighter)
     assert all(r["rms_heldout"] <= 1.5 * r["noise_floor"] for r in rows if r["verdict"] == "explained")
+    assert any(r["case"] == "holdout8_drift_linear_plus_sine_repeated_triangles" for r in rows)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: a drift named on held-out blocks leaves 1.49 noise "
-                                        "floors, 1.51 true noise levels, at seed 0")
-def test_explained_means_within_the_true_noise_at_the_bound(rows):
-    rs = [r for r in rows if r["case"] in EXPLAINED_AT_THE_BOUND]
-    assert rs
-    over = [r for r in rs if r["explained_over_limit"]]
-    assert not over, _over(over)
-
-
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 48/54 runs of the combined "
-                                        "cases of the thirteen sets (16/18 at seed 0: creep under a clip, "
-                                        "an initial state with Cole-Davidson creep)")
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 51/57 runs of the combined "
+                                        "cases of the fourteen sets (17/19 at seed 0: creep under a clip, "
+                                        "an initial state read as a drift under a swept sine with saturation)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
