@@ -10,12 +10,9 @@ import numpy as np
 __all__ = ["Parameter", "Context", "Part", "register", "PARTS", "SLOTS"]
 
 
-Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log", "reach"], defaults=(None,))
-Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds,
-whether it is searched on a logarithmic scale, and optionally ``reach``:
-wider bounds ``(lower, upper)`` that the search moves to when its best
-point ends at the first bounds' edge (the first bounds are a prior guess
-the data may push against; :meth:`VariableProjection.optimise`).
+Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log"])
+Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds and
+whether it is searched on a logarithmic scale.
 
 Examples
 --------

@@ -264,13 +264,7 @@ class Saturation(Part):
 class InitialState(Part):
     """Unknown memory at the record's start: the plays start from the
     state a preload history leaves, the virgin state driven to ``u1`` and
-    ``u2`` (scaled input) before the first sample.  They are searched within
-    a quarter of the input span beyond the record's input range and, when
-    the best point ends at that edge, on up to one span beyond it (an
-    actuator parked after a run to the top of its stroke and recorded under
-    a smaller drive: a quarter span alone left a run to 1.8 times the
-    record's largest input 2-7 noise floors at the start; one span from the
-    outset led the search of the piezo record to a worse optimum).
+    ``u2`` (scaled input) before the first sample.
 
     Examples
     --------
@@ -290,9 +284,8 @@ class InitialState(Part):
     def parameters(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())
         w = hi - lo
-        reach = (lo - w, hi + w)
-        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False, reach),
-                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False, reach)]
+        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False),
+                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False)]
 
     def initial_values(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())

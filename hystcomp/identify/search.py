@@ -379,40 +379,7 @@ class VariableProjection:
         minimize(cost, u0, method="Nelder-Mead", bounds=[(0.0, 1.0)] * k,
                  options={"maxfev": int(max_evaluations), "initial_simplex": np.array(simplex),
                           "xatol": 1e-3, "fatol": 1e-9 * cache["best"].rss})
-        # a parameter that ends at an edge of its bounds and has a wider reach:
-        # the search goes on from there within the reach (the same budget)
-        at_edge = []
-        for i, (p, q) in enumerate(params):
-            if q.reach is None:
-                continue
-            val = cache["best"].values[p.kind][q.name]
-            z = math.log(val) if q.log else val
-            if min(z - lo[i], hi[i] - z) <= EDGE * width[i]:
-                at_edge.append((p, q._replace(lower=q.reach[0], upper=q.reach[1], reach=None)))
-        if at_edge:
-            wide = dict(((p.kind, q.name), (p, q2)) for p, q2 in at_edge)
-
-            class _Wider:
-                # the structure, its parameters with the reach as bounds
-                def __init__(self, inner):
-                    self._inner = inner
-
-                def parameters(self, ctx_):
-                    return [wide.get((p.kind, q.name), (p, q)) for p, q in self._inner.parameters(ctx_)]
-
-                def __getattr__(self, name):
-                    return getattr(self._inner, name)
-
-            best = cache["best"]
-            nxt = self.optimise(_Wider(structure), best.values, free=free, max_evaluations=max_evaluations)
-            if nxt.rss < best.rss:
-                return nxt
-            return best
         return cache["best"]
-
-
-#: a parameter within this share of its bounds' width from an edge is at the edge
-EDGE = 0.01
 
 
 def _rows(a, rows):
