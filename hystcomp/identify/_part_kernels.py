@@ -86,19 +86,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
 
 @njit(cache=True)
 def fractional_delay(x, d, out):
-    """out[k] = x at sample k - d (linear interpolation; x[0] before the start)."""
-    n = x.size
-    for k in range(n):
-        s = k - d
-        if s <= 0.0:
-            out[k] = x[0]
-        else:
-            j = int(math.floor(s))
-            f = s - j
-            if j + 1 < n:
-                out[k] = (1.0 - f) * x[j] + f * x[j + 1]
-            else:
-                out[k] = x[n - 1]
+    """out[k] = x at sample k - d (linear interpolation; x[0] before the start):
+    :func:`drifting_delay` with the same delay at both ends."""
+    drifting_delay(x, d, d, out)
 
 
 @njit(cache=True)
