@@ -10,9 +10,12 @@ import numpy as np
 __all__ = ["Parameter", "Context", "Part", "register", "PARTS", "SLOTS"]
 
 
-Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log"])
-Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds and
-whether it is searched on a logarithmic scale.
+Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log", "reach"], defaults=(None,))
+Parameter.__doc__ = """A nonlinear parameter of a part: name, initial value, bounds,
+whether it is searched on a logarithmic scale, and optionally ``reach``:
+wider bounds ``(lower, upper)`` that the search moves on to when its best
+point ends at an edge of the first bounds (the first bounds are a prior
+guess the data may push against; :meth:`VariableProjection.optimise`).
 
 Examples
 --------

@@ -284,8 +284,9 @@ class InitialState(Part):
     def parameters(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())
         w = hi - lo
-        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False),
-                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False)]
+        reach = (lo - w, hi + w)
+        return [Parameter("u1", hi, lo - 0.25 * w, hi + 0.25 * w, False, reach),
+                Parameter("u2", lo, lo - 0.25 * w, hi + 0.25 * w, False, reach)]
 
     def initial_values(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())

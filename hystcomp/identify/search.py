@@ -346,40 +346,60 @@ class VariableProjection:
         if not params or max_evaluations <= 0:
             return best
 
-        def to_z(vals):
-            z = []
-            for p, q in params:
-                val = min(max(vals[p.kind][q.name], q.lower), q.upper)
-                z.append(math.log(val) if q.log else val)
-            return np.array(z)
-
-        lo = np.array([math.log(q.lower) if q.log else q.lower for _, q in params])
-        hi = np.array([math.log(q.upper) if q.log else q.upper for _, q in params])
-        width = np.where(hi > lo, hi - lo, 1.0)
-        base = best.values
         cache = {"best": best}
 
-        def from_u(u):
-            z = lo + np.clip(u, 0.0, 1.0) * width
-            vals = {k: dict(v) for k, v in base.items()}
-            for (p, q), zi in zip(params, z):
-                vals.setdefault(p.kind, {})[q.name] = math.exp(zi) if q.log else float(zi)
-            return vals
+        def search(params, base):
+            # Nelder-Mead over the unit box of `params`' bounds, from `base`
+            lo = np.array([math.log(q.lower) if q.log else q.lower for _, q in params])
+            hi = np.array([math.log(q.upper) if q.log else q.upper for _, q in params])
+            width = np.where(hi > lo, hi - lo, 1.0)
 
-        def cost(u):
-            pt = self.evaluate(structure, from_u(u))
-            if pt.rss < cache["best"].rss:
-                cache["best"] = pt
-            return pt.rss
+            def from_u(u):
+                z = lo + np.clip(u, 0.0, 1.0) * width
+                vals = {k: dict(v) for k, v in base.items()}
+                for (p, q), zi in zip(params, z):
+                    vals.setdefault(p.kind, {})[q.name] = math.exp(zi) if q.log else float(zi)
+                return vals
 
-        u0 = (to_z(base) - lo) / width
-        k = len(params)
-        simplex = [u0] + [u0 + np.where(np.arange(k) == i, (0.1 if u0[i] < 0.9 else -0.1), 0.0)
-                          for i in range(k)]
-        minimize(cost, u0, method="Nelder-Mead", bounds=[(0.0, 1.0)] * k,
-                 options={"maxfev": int(max_evaluations), "initial_simplex": np.array(simplex),
-                          "xatol": 1e-3, "fatol": 1e-9 * cache["best"].rss})
+            def cost(u):
+                pt = self.evaluate(structure, from_u(u))
+                if pt.rss < cache["best"].rss:
+                    cache["best"] = pt
+                return pt.rss
+
+            z0 = []
+            for p, q in params:
+                val = min(max(base[p.kind][q.name], q.lower), q.upper)
+                z0.append(math.log(val) if q.log else val)
+            u0 = (np.array(z0) - lo) / width
+            k = len(params)
+            simplex = [u0] + [u0 + np.where(np.arange(k) == i, (0.1 if u0[i] < 0.9 else -0.1), 0.0)
+                              for i in range(k)]
+            minimize(cost, u0, method="Nelder-Mead", bounds=[(0.0, 1.0)] * k,
+                     options={"maxfev": int(max_evaluations), "initial_simplex": np.array(simplex),
+                              "xatol": 1e-3, "fatol": 1e-9 * cache["best"].rss})
+            return lo, width
+
+        lo, width = search(params, best.values)
+        # a parameter with a wider reach whose best value ends at (or beyond) an
+        # edge of its first bounds: search on from the best point with the
+        # reach as bounds for those parameters (the same budget once more)
+        wider, moved = [], False
+        for i, (p, q) in enumerate(params):
+            if q.reach is not None:
+                val = cache["best"].values[p.kind][q.name]
+                z = math.log(val) if q.log else val
+                if min(z - lo[i], lo[i] + width[i] - z) <= EDGE * width[i]:
+                    q = q._replace(lower=q.reach[0], upper=q.reach[1], reach=None)
+                    moved = True
+            wider.append((p, q))
+        if moved:
+            search(wider, cache["best"].values)
         return cache["best"]
+
+
+#: a parameter within this share of its bounds' width from an edge is at the edge
+EDGE = 0.01
 
 
 def _rows(a, rows):
