@@ -1,9 +1,11 @@
-"""The initial state's preload history may lie beyond the record's input range by up to one
-input span (hystcomp.identify.parts_core.InitialState): an actuator parked after a run to
-the top of its stroke is often recorded under a smaller drive, and the plays it left moved
-are the record's first misfit. Until round 13 the preload stopped a quarter span beyond the
-record's range, and a core left by a run to 1.8 times the record's largest input (HOLDOUT12's
-pair: a unipolar run to 88-97 V, a record within +-50 V) kept 2-7 noise floors at its start.
+"""The initial state's preload history may lie beyond the record's input range
+(hystcomp.identify.parts_core.InitialState): an actuator parked after a run to the top of
+its stroke is often recorded under a smaller drive, and the plays it left moved are the
+record's first misfit. The preload is searched a quarter span beyond the record's range and,
+when the best point ends at that edge, on up to one span beyond it (Parameter.reach, round
+14). With the quarter span alone a core left by a run to 1.8 times the record's largest input
+(HOLDOUT12's pair: a unipolar run to 88-97 V, a record within +-50 V) kept 2-7 noise floors at
+its start.
 
 The record: the realistic generator's PI core (tests/realistic/mechanisms.py, 200 plays of
 its own density, not hystcomp's) left by a run 0 -> 90 V -> 30 V, then a sine of growing
