@@ -45,3 +45,24 @@ def test_search_goes_on_within_the_reach_from_an_edge(reach, expected):
     pt = vp.optimise(st, {part.kind: {"d": 1.0}}, max_evaluations=40)
     # to 0.05 sample: Nelder-Mead's tolerance is 1e-3 of the reach's width (0.01 sample)
     assert pt.values[part.kind]["d"] == pytest.approx(expected, abs=0.05)
+
+
+@pytest.mark.parametrize("param", [
+    Parameter("d", 1.0, 0.0, 2.0, False, (0.5, 10.0)),      # reach does not contain the bounds
+    Parameter("d", 1.0, 0.0, np.inf, False),                # an infinite bound
+    Parameter("d", 1.0, 0.1, 2.0, True, (0.0, 10.0)),       # log scale, reach down to 0
+])
+def test_bad_bounds_or_reach_named(param):
+    class _Bad(_Shift):
+        kind = "toy_bad"
+
+        def parameters(self, ctx, kinds):
+            return [param]
+
+    n = 400
+    v = np.sin(np.linspace(0, 20, n))
+    ctx = Context(v, 0.01, 0.0, 1.0, n * 0.01, n_thresholds=4)
+    vp = VariableProjection(ctx, v.copy(), np.arange(n) < 300)
+    part = _Bad(None)
+    with pytest.raises(ValueError, match="Parameter 'd' of part 'toy_bad'"):
+        vp.optimise(Structure([part]), {part.kind: {"d": 1.0}}, max_evaluations=5)

@@ -337,6 +337,13 @@ class VariableProjection:
         """
         ctx = self.ctx
         params = [(p, q) for p, q in structure.parameters(ctx) if free is None or p.kind in free]
+        for p, q in params:
+            ends = [q.lower, q.upper] + list(q.reach or [])
+            if not all(math.isfinite(e) for e in ends) or (q.log and min(ends) <= 0) or (
+                    q.reach is not None and not (q.reach[0] <= q.lower and q.upper <= q.reach[1])):
+                raise ValueError(f"Parameter {q.name!r} of part {p.kind!r} has bounds ({q.lower}, {q.upper}) and "
+                                 f"reach {q.reach} but should have finite ends, a reach that contains the "
+                                 "bounds, and positive ends on a logarithmic scale")
         best = None
         for cand in [start] + list(starts or []):
             vals = _merge(start, cand)
