@@ -315,6 +315,12 @@ class VariableProjection:
     def optimise(self, structure, start, free=None, max_evaluations=60, starts=None):
         """Minimise the training RSS over the nonlinear parameters.
 
+        A bounded Nelder-Mead search on each parameter's bounds (its
+        logarithm for ``log`` parameters), from the best of the starting
+        points.  A parameter with a ``reach`` whose best value ends within
+        ``EDGE`` (1 %) of an edge of its bounds is searched once more, from
+        the best point, within its reach (the same budget).
+
         Parameters
         ----------
         structure : Structure
@@ -334,6 +340,13 @@ class VariableProjection:
         -------
         FitPoint
             The best point found.
+
+        Raises
+        ------
+        ValueError
+            When a searched parameter has an infinite bound, a reach that
+            does not contain its bounds, or a bound at or below 0 on a
+            logarithmic scale (the message names the parameter and part).
         """
         ctx = self.ctx
         params = [(p, q) for p, q in structure.parameters(ctx) if free is None or p.kind in free]
