@@ -264,7 +264,14 @@ class Saturation(Part):
 class InitialState(Part):
     """Unknown memory at the record's start: the plays start from the
     state a preload history leaves, the virgin state driven to ``u1`` and
-    ``u2`` (scaled input) before the first sample.
+    ``u2`` (scaled input) before the first sample.  Both are searched
+    within a quarter of the input span beyond the record's input range and,
+    when the best point ends at that edge, on up to one span beyond it
+    (their ``reach``: an actuator parked after a run to the top of its
+    stroke and recorded under a smaller drive; a quarter span alone left a
+    run to 1.8 times the record's largest input 2-7 noise floors at the
+    start, one span from the outset led the piezo record's search to a
+    worse optimum).
 
     Examples
     --------
