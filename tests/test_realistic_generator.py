@@ -871,3 +871,25 @@ def test_holdout2_mechanisms_follow_their_laws():
     assert r.tolist() == [-1.0, 1.0, 1.0, -1.0, -1.0]
     d = h2.random_walk_drift(5000, dt, 0.3, np.random.default_rng(0))
     assert d[0] == 0 and np.ptp(d) == pytest.approx(0.3)
+
+
+@pytest.mark.parametrize("seed", [0, 1, 2])
+def test_holdout2_asymmetry_unipolar_starts_away_from_rest(seed):
+    """The core of ``holdout2_asymmetry_unipolar`` rests at mid-stroke (50 V) and the record
+    starts at 0 V, so it carries an initial state as well as its asymmetry (labelled so since
+    round 15). Against the same core at rest at the first input (every play at -50, the
+    diagnosis's rest point on a record that contains 0 V) the output differs by more than 6
+    noise std RMS over the first fifth (measured 39-42 for seeds 0-2) and by nothing at the end
+    (the memory is wiped by the first full excursion; 1e-9 of the span allows for rounding)."""
+    rec = HOLDOUT2["holdout2_asymmetry_unipolar"](seed)
+    assert rec.expect_effects == {"asymmetry", "initial_state"}
+    skew = -np.random.default_rng([seed, 2000 + 9]).uniform(0.5, 0.8)
+    v = ex.unipolar_triangles(18_000, 6, 100.0, decay=0.5)
+    y = me.asymmetric_play_core(v - 50.0, 100.0, skew=skew)
+    at_rest = me.asymmetric_play_core(v - 50.0, 100.0, skew=skew, state=np.full(200, -50.0))
+    d = y - at_rest
+    k = len(v) // 5
+    assert np.sqrt(np.mean(d[:k] ** 2)) > 6 * rec.noise_std
+    assert abs(d[-1]) <= 1e-9 * np.ptp(y)
+    # the record is the core plus its noise: the core rebuilt here is the record's
+    assert np.std(rec.y - y) == pytest.approx(rec.noise_std, rel=0.1)

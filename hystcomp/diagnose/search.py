@@ -704,5 +704,6 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
             del chosen[j], chosen_kinds[j]
             struct, cur = st, pt
         else:
+            say(f"revise: {chosen[j]} ({kind}) kept: without it {after:.4g} (with it {before:.4g})")
             j += 1
     return struct, cur, revisions

@@ -22,6 +22,8 @@ PARTIAL = 0.5
 MOVING = 0.02
 #: excess RMS at the record's start (fraction of the noise floor) for initial_state
 START = 0.5
+#: samples running into a flat extreme that the output-saturation test needs
+CLIP_SAMPLES = 20
 #: a drift's trend that changes with the input level may be at most this
 #: multiple of the trend common to every level (partial RMS of each)
 LEVEL_TREND = 1.0
@@ -277,13 +279,17 @@ def evidence(rec, e, pred, sigma, only=None):
         for top in (True, False):
             # the extreme without its noise: a high percentile of the output
             lim = float(np.percentile(rec.y, 99.5 if top else 0.5))
-            at = np.abs(rec.y - lim) <= 3 * sigma
+            near = np.abs(rec.y - lim) <= 3 * sigma
             # on the branch that runs into the extreme (rising into the top): a
             # hysteresis loop reaches its extreme only at the input's extreme, a
             # clipped output long before (a loop's flat start after a reversal
             # does not count)
-            at &= (rec.direction > 0) if top else (rec.direction < 0)
-            if at.mean() < 0.005 or at.all():
+            at = near & ((rec.direction > 0) if top else (rec.direction < 0))
+            # the output sits at the extreme for 0.5 % of the record or more, in
+            # either direction (a brief clip under random drive is about as often
+            # left running in as running out; counting one direction alone
+            # halved it below the bar); and a few samples run into it
+            if near.mean() < 0.005 or at.sum() < CLIP_SAMPLES or at.all():
                 continue
             # from where the output first sits there to the input's extreme (holds at the
             # extreme put many samples at one input value: a percentile range would hide it)
