@@ -35,6 +35,8 @@ part of :data:`ALL` since.
 :data:`HOLDOUT13` (``cases_holdout13.py``) was written after HOLDOUT12 was measured, by a session that
 did not read how the diagnosis decides, and run once for the thirteenth round's measurement
 (docs/diagnose.md, commit def11bb, 17 of 30 runs right); it is part of :data:`ALL` since.
+:data:`HOLDOUT14` (``cases_holdout14.py``) was written after HOLDOUT13 was measured, by a session that did not read
+how the diagnosis decides, to be run once for the fourteenth round's measurement (docs/diagnose.md).
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -52,10 +54,11 @@ from .cases_holdout10 import HOLDOUT10  # noqa: F401
 from .cases_holdout11 import HOLDOUT11  # noqa: F401
 from .cases_holdout12 import HOLDOUT12  # noqa: F401
 from .cases_holdout13 import HOLDOUT13  # noqa: F401
+from .cases_holdout14 import HOLDOUT14  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
-       **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13}
+       **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
-           "HOLDOUT12", "HOLDOUT13", "ALL"]
+           "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "ALL"]
