@@ -15,8 +15,10 @@ HOLDOUT9 was run once for the ninth round's final measurement and is part of ALL
 HOLDOUT10 was run once for the tenth round's final measurement and is part of ALL since.
 HOLDOUT11 was run once for the eleventh round's measurement and is part of ALL since.
 HOLDOUT12 was run once for the twelfth round's measurement and is part of ALL since.
+HOLDOUT13 was run once for the thirteenth round's measurement and is part of ALL since.
+HOLDOUT14 was run once for the fifteenth round's measurement (26 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|holdout3|holdout4|holdout5|holdout6|holdout7|holdout8|holdout9|holdout10|holdout11|holdout12|holdout13|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|holdout3|holdout4|holdout5|holdout6|holdout7|holdout8|holdout9|holdout10|holdout11|holdout12|holdout13|holdout14|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 

@@ -1,6 +1,6 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
-Every case of the tuning, held-out and HOLDOUT2-13 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-14 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -45,24 +45,27 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# Missed since HOLDOUT13 joined (round 13): 138/155 at seed 0 (89.0 %, round 14), 140 needed; over
-# three seeds 413/465 (88.8 %): the thirteen earlier sets 393/435 and HOLDOUT13 20/30 (17/30 when
-# it was fresh). On each fresh set when it was fresh: 21/36 (held-out), 17/30 (HOLDOUT2), 19/30
-# (HOLDOUT3), 28/30 (HOLDOUT4), 20/33 (HOLDOUT5), 21/30 (HOLDOUT6), 22/30 (HOLDOUT7), 18/30 (HOLDOUT8),
-# 24/30 (HOLDOUT9), 17/30 (HOLDOUT10), 24/30 (HOLDOUT11), 26/30 (HOLDOUT12) and 17/30 (HOLDOUT13)
+# The issue's criterion is over three seeds: 441/495 (89.1 %) over the fifteen sets in round 15
+# (the fourteen earlier sets 415/465, HOLDOUT14 26/30 when fresh), so it stays open. At seed 0, as
+# run here, 149/165 (90.3 %) meet 90 % with no run to spare (148.5 needed): a decision that sits on a
+# threshold may fall either way on another machine's BLAS, so a pass is reported (XPASS) and a miss
+# is expected, not an error; the regression guard below holds the line. On each fresh set when it
+# was fresh: 21/36 (held-out), 17/30 (HOLDOUT2), 19/30 (HOLDOUT3), 28/30 (HOLDOUT4), 20/33
+# (HOLDOUT5), 21/30 (HOLDOUT6), 22/30 (HOLDOUT7), 18/30 (HOLDOUT8), 24/30 (HOLDOUT9), 17/30
+# (HOLDOUT10), 24/30 (HOLDOUT11), 26/30 (HOLDOUT12), 17/30 (HOLDOUT13) and 26/30 (HOLDOUT14)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=True, reason="issue 10 open: 138/155 right at seed 0 over the fourteen sets "
-                                        "(89.0 %; 90 % needs 140)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 441/495 right over three seeds of the fifteen sets (89.1 %); "
+                                         "at seed 0 149/165 (90.3 %), 148.5 needed, no run to spare")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 138/155 right at seed 0 in round 14 (89.0 %); at least 132 (85 %), six
+    # regression guard: 149/165 right at seed 0 in round 15 (90.3 %); at least 141 (85 %), eight
     # runs of margin for decisions that sit on a threshold
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 155
+    assert len(rows) >= 165
     assert right >= 0.85 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
@@ -84,8 +87,8 @@ def _over(rows):
 # Met since round 13, when "explained" began to ask for the held-out RMS within 1.5 noise
 # floors less the floor's standard error: HOLDOUT8's thermal offset (linear plus a sinusoid)
 # at seed 0 had 1.49 estimated noise floors left, its floor 1.4 % above the true noise, so
-# 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). Over 465 runs of the
-# fourteen sets no "explained" verdict is above 1.5 true noise levels.
+# 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). Over 495 runs of the
+# fifteen sets (round 15) no "explained" verdict is above 1.5 true noise levels.
 def test_explained_means_within_the_noise(rows):
     over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
@@ -95,8 +98,8 @@ def test_explained_means_within_the_noise(rows):
     assert any(r["case"] == "holdout8_drift_linear_plus_sine_repeated_triangles" for r in rows)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 50/57 runs (16/19 at seed 0) of the combined "
-                                        "cases of the fourteen sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 55/63 runs (19/21 at seed 0) of the combined "
+                                        "cases of the fifteen sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, a reversal-curve memory read as a drift)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]

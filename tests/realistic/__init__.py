@@ -36,7 +36,8 @@ part of :data:`ALL` since.
 did not read how the diagnosis decides, and run once for the thirteenth round's measurement
 (docs/diagnose.md, commit def11bb, 17 of 30 runs right); it is part of :data:`ALL` since.
 :data:`HOLDOUT14` (``cases_holdout14.py``) was written after HOLDOUT13 was measured, by a session that did not read
-how the diagnosis decides, to be run once for the fourteenth round's measurement (docs/diagnose.md).
+how the diagnosis decides, and run once for the fifteenth round's measurement (docs/diagnose.md, commit 9f2684c,
+26 of 30 runs right); it is part of :data:`ALL` since.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401

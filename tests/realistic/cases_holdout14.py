@@ -1,5 +1,6 @@
 """The HOLDOUT14 set: written after HOLDOUT13 was measured, by a session that did not read how the diagnosis
-decides, to be run once for the fourteenth round's measurement (docs/diagnose.md).
+decides, and run once for the fifteenth round's measurement (docs/diagnose.md: 26 of 30 runs right); part of ALL
+since.
 
 Mechanisms and signals that the other sets do not have, or not in these combinations (the laws and signals are in
 :mod:`.mechanisms14`, each beside its source):
