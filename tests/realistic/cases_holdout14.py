@@ -66,18 +66,11 @@ from scipy.optimize import brentq
 
 from . import mechanisms as me
 from . import mechanisms14 as m14
+# thresholds and weights of an exponential density with a drawn linear part, as HOLDOUT13 draws them
+from .cases_holdout13 import _exp_plays
 from .record import case_set, finish
 
 HOLDOUT14, case, _rng = case_set("holdout14_", 14000)
-
-
-def _exp_plays(rng, r_max, n, lam):
-    """n thresholds evenly spaced in (0, r_max], weights of an exponential density exp(-r / lam), a drawn linear
-    part w0; the weights sum to 1 - w0."""
-    r = (np.arange(n) + 0.5) * r_max / n
-    dens = np.exp(-r / lam)
-    w0 = rng.uniform(0.3, 0.45)
-    return r, (1 - w0) * dens / dens.sum(), w0
 
 
 # ---- clean ----

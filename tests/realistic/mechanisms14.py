@@ -10,25 +10,13 @@ import numpy as np
 from scipy.interpolate import PchipInterpolator
 from scipy.signal import butter, sosfilt
 
+from . import mechanisms13 as _m13
+
+#: the play sum with a linear part (the play operator's definition), shared with HOLDOUT13
+plays = _m13.plays
+
 
 # ---- the rate-independent core ----
-
-def plays(v, r, w, w0, state=0.0, return_state=False):
-    """y = w0 v + sum_k w_k z_k, z_k the play of threshold r_k >= 0: z_k(t) = min(max(z_k(t-), v(t) - r_k), v(t) +
-    r_k) (the play operator: Krasnosel'skii & Pokrovskii, *Systems with Hysteresis*, 1989; Brokate & Sprekels,
-    *Hysteresis and Phase Transitions*, 1996, sec. 2.3), from the given state (a number or one per play; 0: virgin).
-    Returns y (and the final state)."""
-    v = np.asarray(v, float)
-    r = np.asarray(r, float)
-    w = np.asarray(w, float)
-    z = np.broadcast_to(np.asarray(state, float), r.shape).copy()
-    y = np.empty_like(v)
-    for k, vk in enumerate(v.tolist()):
-        np.maximum(z, vk - r, out=z)
-        np.minimum(z, vk + r, out=z)
-        y[k] = w0 * vk + w @ z
-    return (y, z) if return_state else y
-
 
 def weibull_plays(n, r_max, scale, shape, w0):
     """n thresholds evenly spaced in (0, r_max] with weights of a Weibull density (shape / scale) (r / scale)^(shape -
