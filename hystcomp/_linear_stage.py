@@ -25,25 +25,51 @@ __all__ = ["LinearStage", "lag_bank"]
 @njit(cache=True, no_cfunc_wrapper=True)
 def _ss_columns(A, B, C, D, U, X, out):
     """Filter every column of U (n, m) through the SISO system (A, B, C, D);
-    X (m, ns) holds one state per column, updated in place."""
+    X (m, ns) holds one state per column, updated in place.
+
+    The loop runs over samples outside and columns inside, along U's rows
+    in C order; first- and second-order stages (a lag, a resonance: the
+    stages the diagnosis fits) keep their matrices in scalars.  The
+    arithmetic of each column is the same in every branch, in the same
+    order, so the branches give the same floats."""
     n, m = U.shape
     ns = A.shape[0]
-    xn = np.empty(ns)
-    for j in range(m):
-        x = X[j]
+    if ns == 1:
+        a00, b0, c0 = A[0, 0], B[0], C[0]
         for k in range(n):
+            for j in range(m):
+                u = U[k, j]
+                x0 = X[j, 0]
+                out[k, j] = D * u + c0 * x0
+                X[j, 0] = b0 * u + a00 * x0
+        return
+    if ns == 2:
+        a00, a01, a10, a11 = A[0, 0], A[0, 1], A[1, 0], A[1, 1]
+        b0, b1, c0, c1 = B[0], B[1], C[0], C[1]
+        for k in range(n):
+            for j in range(m):
+                u = U[k, j]
+                x0 = X[j, 0]
+                x1 = X[j, 1]
+                out[k, j] = D * u + c0 * x0 + c1 * x1
+                X[j, 0] = b0 * u + a00 * x0 + a01 * x1
+                X[j, 1] = b1 * u + a10 * x0 + a11 * x1
+        return
+    xn = np.empty(ns)
+    for k in range(n):
+        for j in range(m):
             u = U[k, j]
             acc = D * u
             for a in range(ns):
-                acc += C[a] * x[a]
+                acc += C[a] * X[j, a]
             out[k, j] = acc
             for a in range(ns):
                 s = B[a] * u
                 for b in range(ns):
-                    s += A[a, b] * x[b]
+                    s += A[a, b] * X[j, b]
                 xn[a] = s
             for a in range(ns):
-                x[a] = xn[a]
+                X[j, a] = xn[a]
 
 
 @njit(cache=True, no_cfunc_wrapper=True)
@@ -243,13 +269,16 @@ class LinearStage:
                              f"frequency {0.5 / dt} Hz of dt = {dt}")
         # prewarp so that the discrete mode sits exactly at `frequency`
         w = 2.0 / dt * math.tan(math.pi * f * dt)
-        import control as ct
+        from scipy.signal import cont2discrete
 
-        # bilinear rule (I - A dt/2)^-1 (I + A dt/2), ...: python-control's
-        # sample_system (scipy.signal.cont2discrete "bilinear") of the prewarped mode
-        sysd = ct.sample_system(ct.ss([[0.0, 1.0], [-w * w, -2 * z * w]], [[0.0], [w * w]], [[1.0, 0.0]], 0.0),
-                                dt, method="bilinear")
-        Ad, Bd, Cd, Dd = sysd.A, sysd.B[:, 0], sysd.C[0], sysd.D[0, 0]
+        # bilinear rule (I - A dt/2)^-1 (I + A dt/2), ...: scipy.signal.cont2discrete
+        # "bilinear" of the prewarped mode (what python-control's sample_system
+        # calls, without building two StateSpace objects: a diagnosis builds
+        # this stage at every step of its resonance search)
+        sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * z * w]]), np.array([[0.0], [w * w]]),
+                 np.array([[1.0, 0.0]]), np.array([[0.0]]))
+        Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
+        Ad, Bd, Cd, Dd = Ad, Bd[:, 0], Cd[0], Dd[0, 0]
         return cls(Ad, Bd, Cd, float(Dd), dt, kind="resonance",
                    parameters={"frequency": f, "damping": z})
 

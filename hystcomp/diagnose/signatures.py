@@ -50,16 +50,37 @@ def _t_quantile(dof):
     return float(t.ppf(_LEVEL_25, dof))
 
 
-def _rss(e, F):
-    coef, *_ = np.linalg.lstsq(F, e, rcond=None)
-    r = e - F @ coef
-    return float(r @ r)
+def _rss_gram(G, b, ee, rcond=1e-13):
+    """Residual sum of squares of the least-squares fit whose Gram matrix is
+    `G`, right-hand side `b` and ``e @ e`` `ee` (columns equilibrated;
+    eigenvalues below ``rcond * m * max`` dropped, so a rank-deficient set
+    of columns counts once)."""
+    d = np.sqrt(np.maximum(np.diag(G), 0.0))
+    d[d == 0] = 1.0
+    lam, U = np.linalg.eigh(G / np.outer(d, d))
+    keep = lam > max(float(lam.max()), 0.0) * lam.size * rcond
+    z = U[:, keep].T @ (b / d)
+    return max(ee - float(z @ (z / lam[keep])), 0.0)
 
 
 def _partial(e, N, F):
-    """RMS of what the columns F explain of e beyond the columns N."""
+    """RMS of what the columns F explain of e beyond the columns N.
+
+    One Gram matrix of ``[N, F]`` (by blocks, without stacking the
+    columns) serves both fits: 40,000 rows cost a few ms, where an SVD per
+    fit (``numpy.linalg.lstsq``) cost 12 ms each."""
     n = e.size
-    return math.sqrt(max(_rss(e, N) - _rss(e, np.column_stack([N, F])), 0.0) / n)
+    F = F.reshape(n, -1)
+    k = N.shape[1]
+    m = k + F.shape[1]
+    G = np.empty((m, m))
+    G[:k, :k] = N.T @ N
+    G[:k, k:] = N.T @ F
+    G[k:, :k] = G[:k, k:].T
+    G[k:, k:] = F.T @ F
+    b = np.concatenate([N.T @ e, F.T @ e])
+    ee = float(e @ e)
+    return math.sqrt(max(_rss_gram(G[:k, :k], b[:k], ee) - _rss_gram(G, b, ee), 0.0) / n)
 
 
 def _level_split(e, N, F, by_level):

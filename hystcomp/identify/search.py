@@ -15,6 +15,7 @@ prediction exactly.
 
 import hashlib
 import math
+from collections import OrderedDict
 
 import numpy as np
 from scipy.optimize import minimize
@@ -90,6 +91,22 @@ class Structure:
     def design(self, values, ctx):
         """Regressor columns, bounds and names for the values
         ``{kind: {parameter: value}}``."""
+        C, F, lower, upper, names = self.design_blocks(values, ctx)
+        return np.column_stack([C, F]), lower, upper, names
+
+    def design_blocks(self, values, ctx):
+        """:meth:`design` with the columns in two blocks, ``C`` (the core's
+        plays after the filters: the memoised block itself when no filter
+        acts) and ``F`` (the additive parts' columns), so that the inner
+        solve need not copy the plays into one matrix.
+
+        Returns
+        -------
+        C : ndarray, shape (n, k)
+        F : ndarray, shape (n, m)
+        lower, upper : ndarray, shape (k + m,)
+        names : list of str
+        """
         x = ctx.x
         for p in self.parts:
             if p.slot == "input":
@@ -104,7 +121,7 @@ class Structure:
             if p.slot == "filter":
                 C = p.filter(C, values.get(p.kind, {}), ctx)
         k = C.shape[1]
-        blocks, lower, upper = [C], [np.zeros(k)], [np.full(k, np.inf)]
+        blocks, lower, upper = [], [np.zeros(k)], [np.full(k, np.inf)]
         names = ["p0"] + [f"p{i}" for i in range(1, k)]
         for p in self.parts:
             if p.slot == "additive":
@@ -113,7 +130,8 @@ class Structure:
                 lower.append(lo)
                 upper.append(hi)
                 names += list(nm)
-        return np.column_stack(blocks), np.concatenate(lower), np.concatenate(upper), names
+        F = np.column_stack(blocks) if blocks else np.zeros((C.shape[0], 0))
+        return C, F, np.concatenate(lower), np.concatenate(upper), names
 
     def after_output(self, values, ctx):
         """Sum of the ``after_output`` parts' terms (0.0 without any)."""
@@ -221,6 +239,7 @@ class VariableProjection:
         self.y = np.asarray(y, dtype=np.float64)
         self.train = np.asarray(train, bool)
         self.n_evaluations = 0
+        self._gram_cache = OrderedDict()
 
     def evaluate(self, structure, values):
         """The inner (linear) solution for given nonlinear values.
@@ -238,7 +257,8 @@ class VariableProjection:
         """
         self.n_evaluations += 1
         ctx, y = self.ctx, self.y
-        A, lower, upper, names = structure.design(values, ctx)
+        C, F, lower, upper, names = structure.design_blocks(values, ctx)
+        k_c = C.shape[1]
         out = structure.output_part()
         rows = self.train
         weights = None
@@ -254,14 +274,15 @@ class VariableProjection:
         # held at 0 instead of fitting a blip and exploding wherever the input
         # goes further (the held-out part, another record)
         k_core = sum(1 for nm in names if nm.startswith("p") and nm[1:].isdigit())
-        still = np.zeros(A.shape[1], bool)
-        Ar = _rows(A, rows)
-        if k_core > 1 and Ar.shape[0]:
-            moves = column_ranges(Ar, k_core)
+        still = np.zeros(len(names), bool)
+        Cr = _rows(C, rows)
+        if k_core > 1 and Cr.shape[0]:
+            moves = column_ranges(Cr, k_core)
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
-        theta = self._solve(Ar, _rows(target, rows), sw, still, lower, upper)
-        u = A @ theta
+        theta = self._solve(Cr, _rows(F, rows), _rows(target, rows), sw, still, lower, upper,
+                            self._plays_gram(C, Cr, rows) if sw is None else None)
+        u = C @ theta[:k_c] + F @ theta[k_c:]
         ov = values.get(out.kind, {}) if out is not None else {}
         pred = u if out is None else out.output(u, ov, ctx)
         slope = getattr(out, "output_slope", None)
@@ -271,12 +292,13 @@ class VariableProjection:
             # slope (u + du) ~ slope u + (y - map(u)) on every training row
             tr = self.train
             rss = float(np.sum((y - pred)[tr] ** 2))
+            Ct, Ft = _rows(C, tr), _rows(F, tr)
             for _ in range(GAUSS_NEWTON):
                 sl = slope(u, ov, ctx)
                 slt = _rows(sl, tr)
-                th = self._solve(_rows(A, tr), _rows(u + (y - pred) / np.where(sl > 1e-12, sl, 1.0), tr),
+                th = self._solve(Ct, Ft, _rows(u + (y - pred) / np.where(sl > 1e-12, sl, 1.0), tr),
                                  slt, still, lower, upper)
-                u2 = A @ th
+                u2 = C @ th[:k_c] + F @ th[k_c:]
                 p2 = out.output(u2, ov, ctx)
                 r2 = float(np.sum((y - p2)[tr] ** 2))
                 if not r2 < rss:
@@ -287,15 +309,44 @@ class VariableProjection:
         k = int(np.sum(theta != 0)) + len(structure.parameters(ctx))
         return FitPoint(values, theta, pred, float(e @ e), int(self.train.sum()), k, names)
 
+    def _plays_gram(self, C, Cr, rows):
+        """``Cr^T Cr`` of the memoised play block `C` (read-only) on the
+        fitted rows, kept for the last :data:`CORE_CACHE` blocks and row
+        sets: the candidates after the core (additive columns, the output
+        map) solve with the same plays many times.  None for a block that
+        is not memoised (a filter made it)."""
+        if C.flags.writeable:
+            return None
+        k = int(np.count_nonzero(rows))
+        rk = (k,) if k == rows.size or rows[:k].all() else hashlib.blake2b(rows.tobytes(), digest_size=16).digest()
+        key = (id(C), rk)
+        hit = self._gram_cache.get(key)
+        if hit is not None and hit[0] is C:
+            self._gram_cache.move_to_end(key)
+            return hit[1]
+        G = Cr.T @ Cr
+        self._gram_cache[key] = (C, G)
+        while len(self._gram_cache) > CORE_CACHE:
+            self._gram_cache.popitem(last=False)
+        return G
+
     @staticmethod
-    def _solve(Ar, yr, sw, still, lower, upper):
-        """Weights of the rows `Ar`, `yr` (row weights `sw`, columns `still`
-        held at 0) by the one constrained least-squares solver."""
+    def _solve(Cr, Fr, yr, sw, still, lower, upper, plays_gram=None):
+        """Weights of the rows ``[Cr, Fr]``, `yr` (row weights `sw`, columns
+        `still` held at 0) by the one constrained least-squares solver; the
+        Gram matrix is formed by blocks (``plays_gram``: ``Cr^T Cr`` when
+        known)."""
         if sw is not None:
-            Ar, yr = Ar * sw[:, None], yr * sw
-        n_r = max(Ar.shape[0], 1)
-        G = Ar.T @ Ar
-        b = Ar.T @ yr
+            Cr, Fr, yr = Cr * sw[:, None], Fr * sw[:, None], yr * sw
+        n_r = max(Cr.shape[0], 1)
+        kc = Cr.shape[1]
+        k = kc + Fr.shape[1]
+        G = np.empty((k, k))
+        G[:kc, :kc] = Cr.T @ Cr if plays_gram is None else plays_gram
+        G[:kc, kc:] = Cr.T @ Fr
+        G[kc:, :kc] = G[:kc, kc:].T
+        G[kc:, kc:] = Fr.T @ Fr
+        b = np.concatenate([Cr.T @ yr, Fr.T @ yr])
         if still.any():
             # the columns held at 0 leave the problem (as zero columns would)
             G[still, :] = 0.0
@@ -505,8 +556,9 @@ class PartsModel:
         ndarray, shape (n,)
         """
         ctx = self._ctx.like(np.asarray(v, dtype=np.float64))
-        A = self.structure.design(self.values, ctx)[0]
-        u = A @ self.theta
+        C, F = self.structure.design_blocks(self.values, ctx)[:2]
+        k = C.shape[1]
+        u = C @ self.theta[:k] + F @ self.theta[k:]      # as the fit computes it
         out = self.structure.output_part()
         y = u if out is None else out.output(u, self.values.get(out.kind, {}), ctx)
         y = y + self.structure.after_output(self.values, ctx)
