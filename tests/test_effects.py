@@ -250,6 +250,26 @@ def test_part_core_kernel_matches_modified_play():
     np.testing.assert_allclose(rd.simulate(V), out @ np.concatenate([[1.0], W]), atol=1e-12)
 
 
+def test_part_core_kernel_classical_plays_branch():
+    """The kernel's branch for classical plays (no envelope, rate, level,
+    shift or viscosity) gives the same floats as its general loop, and the
+    plays of PI (eq. 18), with and without a preload history."""
+    from hystcomp.identify._part_kernels import core_columns
+
+    r_all = np.concatenate([[0.0], R])
+    pi = PI(R, W, 1.0)
+    for preload in (np.zeros(0), np.array([0.9, -0.4])):
+        fast = np.empty((V.size, r_all.size))
+        core_columns(V, r_all, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, preload, fast)
+        # a level term of 1e-300 sends the call through the general loop, where
+        # max(1 + 1e-300 x, 0.05) is exactly 1: the same arithmetic, another path
+        general = np.empty_like(fast)
+        core_columns(V, r_all, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, preload, general, 0.0, 1e-300)
+        np.testing.assert_array_equal(fast, general)
+        if preload.size == 0:
+            np.testing.assert_allclose(fast @ np.concatenate([[1.0], W]), pi.simulate(V), atol=1e-12)
+
+
 def test_bad_arguments_are_named():
     with pytest.raises(ValueError, match="time_constant"):
         LinearStage.lag(-1.0, DT)

@@ -62,6 +62,24 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             if wi < lo:
                 wi = lo
             w[i] = wi
+    if (beta == 0.0 and rho == 1.0 and ql == 0.0 and qr == 0.0 and bl == 0.0 and br == 0.0
+            and shift == 0.0 and level == 0.0 and decay == 0.0):
+        # the classical plays (eq. 18): the same floats as the general loop
+        # below, whose envelopes, rate and level terms are then exact identities
+        for k in range(x.size):
+            xk = x[k]
+            for i in range(N):
+                ri = r[i] if r[i] > 0.0 else 0.0
+                lo = xk - ri
+                hi = xk + ri
+                wi = w[i]
+                if wi > hi:
+                    wi = hi
+                if wi < lo:
+                    wi = lo
+                w[i] = wi
+                out[k, i] = wi
+        return
     prev = x[0] if x.size else 0.0
     for k in range(x.size):
         xk = x[k]
