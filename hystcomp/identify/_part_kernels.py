@@ -33,6 +33,16 @@ def _env(s, q, b):
     return math.tanh(b * u) / b
 
 
+@njit(cache=True, inline="always")
+def _clamp(w, lo, hi):
+    """A play's output `w` pushed into its band: first down to `hi`, then up to `lo`."""
+    if w > hi:
+        w = hi
+    if w < lo:
+        w = lo
+    return w
+
+
 @njit(cache=True)
 def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
@@ -56,12 +66,7 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             ri = r[i] * max(1.0 + level * preload[k], 0.05)
             lo = rho * _env(xk - ri, ql, bl)
             hi = _env(xk + ri, qr, br)
-            wi = w[i]
-            if wi > hi:
-                wi = hi
-            if wi < lo:
-                wi = lo
-            w[i] = wi
+            w[i] = _clamp(w[i], lo, hi)
     if (beta == 0.0 and rho == 1.0 and ql == 0.0 and qr == 0.0 and bl == 0.0 and br == 0.0
             and shift == 0.0 and level == 0.0 and decay == 0.0):
         # the classical plays (eq. 18): the same floats as the general loop
@@ -72,11 +77,7 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
                 ri = r[i] if r[i] > 0.0 else 0.0
                 lo = xk - ri
                 hi = xk + ri
-                wi = w[i]
-                if wi > hi:
-                    wi = hi
-                if wi < lo:
-                    wi = lo
+                wi = _clamp(w[i], lo, hi)
                 w[i] = wi
                 out[k, i] = wi
         return
@@ -91,11 +92,7 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             xi = xk - shift if r[i] > 0.0 else xk
             lo = rho * _env(xi - ri, ql, bl)
             hi = _env(xi + ri, qr, br)
-            wi = w[i]
-            if wi > hi:
-                wi = hi
-            if wi < lo:
-                wi = lo
+            wi = _clamp(w[i], lo, hi)
             if decay > 0.0 and r[i] > 0.0:
                 wi = wi + (w[i] - wi) * decay
             w[i] = wi
