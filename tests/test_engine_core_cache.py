@@ -59,3 +59,45 @@ def test_memo_is_bounded_and_read_only():
     after = Structure().design({}, ctx)[0][:, :ctx.thresholds.size]
     assert not np.allclose(before, after)
     np.testing.assert_array_equal(after, PICore().core(ctx.x, {}, ctx))
+
+
+def test_plays_gram_memo_gives_the_fit_computed_afresh():
+    """The inner solve keeps ``C^T C`` of a memoised play block per set of
+    fitted rows: a fit that reuses it equals, to the last bit, the same fit
+    by an engine that has to form it; another row set gets its own entry;
+    a block a filter made (writeable) is never kept; and the stacked design
+    (what :meth:`PartsModel.simulate` used to multiply) gives the same
+    prediction up to rounding."""
+    from hystcomp.identify.parts import Drift, OutputLag
+    from hystcomp.identify.search import VariableProjection
+
+    ctx = _ctx()
+    y = np.tanh(ctx.x) + 0.01 * np.arange(ctx.x.size) / ctx.x.size
+    train = np.arange(ctx.x.size) < 2100
+    s = Structure().extended(Drift())
+    q = {"time_constant": 0.5}
+    other = {"time_constant": 1.5}
+    vp = VariableProjection(ctx, y, train)
+    vp.evaluate(s, {"offset_drift": q})
+    reused = vp.evaluate(s, {"offset_drift": other})
+    assert len(vp._gram_cache) == 1                  # one play block, one row set
+    fresh = VariableProjection(ctx, y, train).evaluate(s, {"offset_drift": other})
+    np.testing.assert_array_equal(reused.theta, fresh.theta)
+    np.testing.assert_array_equal(reused.prediction, fresh.prediction)
+    # blocks spread over the record: another row set, another entry
+    blocks = (np.arange(ctx.x.size) // 300) % 3 != 1
+    vp.train = blocks
+    on_blocks = vp.evaluate(s, {"offset_drift": q})
+    assert len(vp._gram_cache) == 2
+    np.testing.assert_array_equal(on_blocks.theta, VariableProjection(ctx, y, blocks).evaluate(
+        s, {"offset_drift": q}).theta)
+    # (and the row sets do give different fits: the key tells them apart)
+    assert not np.allclose(on_blocks.theta, VariableProjection(ctx, y, train).evaluate(
+        s, {"offset_drift": q}).theta)
+    # a lag after the core makes a new (writeable) block at every solve: nothing kept
+    vp2 = VariableProjection(ctx, y, train)
+    vp2.evaluate(Structure().extended(OutputLag()), {"output_lag": {"time_constant": 0.01}})
+    assert len(vp2._gram_cache) == 0
+    # the stacked design's product equals the blockwise one up to rounding
+    A = s.design({"offset_drift": other}, ctx)[0]
+    np.testing.assert_allclose(A @ reused.theta, reused.prediction, rtol=0, atol=1e-12 * np.abs(y).max())
