@@ -278,7 +278,7 @@ class LinearStage:
         sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * z * w]]), np.array([[0.0], [w * w]]),
                  np.array([[1.0, 0.0]]), np.array([[0.0]]))
         Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
-        Ad, Bd, Cd, Dd = Ad, Bd[:, 0], Cd[0], Dd[0, 0]
+        Bd, Cd, Dd = Bd[:, 0], Cd[0], Dd[0, 0]
         return cls(Ad, Bd, Cd, float(Dd), dt, kind="resonance",
                    parameters={"frequency": f, "damping": z})
 

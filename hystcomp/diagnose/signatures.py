@@ -55,6 +55,8 @@ def _rss_gram(G, b, ee, rcond=1e-13):
     `G`, right-hand side `b` and ``e @ e`` `ee` (columns equilibrated;
     eigenvalues below ``rcond * m * max`` dropped, so a rank-deficient set
     of columns counts once)."""
+    if G.size == 0:                      # no columns: nothing is explained
+        return max(ee, 0.0)
     d = np.sqrt(np.maximum(np.diag(G), 0.0))
     d[d == 0] = 1.0
     lam, U = np.linalg.eigh(G / np.outer(d, d))
