@@ -100,6 +100,8 @@ def run_one(name, seed):
              "dropped": bool(st.get("dropped", False)), "tentative": bool(st.get("tentative", False)),
              "acceptable": st["evidence"].get("acceptable", {}),
              "revised_by": (st["evidence"].get("revised") or {}).get("by"),
+             "loss_without": st["evidence"].get("held_out_loss_without_it_noise_variances"),
+             "gain": st["evidence"].get("held_out_gain_noise_variances"),
              "alternatives": st.get("alternatives", [])} for st in res.steps],
     }
 

@@ -135,3 +135,43 @@ def test_auto_holds_out_a_block_inside_the_fitted_range():
     # "last" keeps the end
     last = diagnose(t, v, y, effects=["drift"], progress=False, held_out="last")
     assert last.held_out_moved == 0.0 and last._rec.held_end == v.size
+
+
+def test_two_redundant_parts_are_each_marked_dropped_at_their_own_step():
+    # the warming record with a drift and two parts it does not need (an output
+    # lag and a dead time): the revision drops both; each drop is marked on its
+    # own step (a second drop was marked on the first dropped step while the
+    # chosen list and the steps drifted apart), the revisions name those
+    # steps, and every part tried carries what the held-out mean square loses
+    # without it, in noise variances
+    rec, ctx, vp, _, _ = _setup()
+    kinds = ["offset_drift", "output_lag", "delay"]
+    parts = [PARTS[k]() for k in kinds]
+    st = Structure()
+    for p in parts:
+        p.prepare(rec.y, ctx)
+        st = st.extended(p)
+    start = {}
+    for p, q in st.parameters(ctx):
+        start.setdefault(p.kind, {})[q.name] = q.initial
+    cur = vp.optimise(st, start, free=None, max_evaluations=60)
+
+    def rms_val(pt):
+        return float(np.sqrt(np.mean((rec.y - pt.prediction)[~rec.train] ** 2)))
+
+    r = rms_val(cur)
+    sigma = 0.05                       # the record's noise
+    effects = ["drift", "rate_dependence", "delay"]
+    steps = [{"effect": e, "rms_before": 2 * r, "evidence": {"acceptable": {k: 1.0}}} for e, k in zip(effects, kinds)]
+    trials = [{k: r} for k in kinds]
+    chosen, chosen_kinds, said = list(effects), list(kinds), []
+    _, final, revisions = search._revise(vp, ctx, rec, st, cur, steps, chosen, chosen_kinds, trials, sigma, rms_val,
+                                         said.append)
+    assert chosen_kinds == ["offset_drift"] and chosen == ["drift"], said
+    assert [bool(s.get("dropped")) for s in steps] == [False, True, True]
+    assert [rv["step"] for rv in revisions] == [2, 3] and [rv["replaced"] for rv in revisions] == kinds[1:]
+    assert [s["evidence"]["revised"]["replaced"] for s in steps[1:]] == kinds[1:]
+    loss = [s["evidence"]["held_out_loss_without_it_noise_variances"] for s in steps]
+    # the warming is worth many times MIN_GAIN (23 noise variances measured);
+    # the parts dropped less than MIN_GAIN (the rule that dropped them)
+    assert loss[0] > 10 * search.MIN_GAIN and all(x < search.MIN_GAIN for x in loss[1:]), loss

@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 10
+SCHEMA_VERSION = 11
 
 
 def _jsonable(x):
@@ -233,11 +233,14 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 10; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 11; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
-        floor's ``relative_standard_error`` in ``noise_floor_method``).
+        floor's ``relative_standard_error`` in ``noise_floor_method``, 11 the
+        steps' ``held_out_loss_without_it_noise_variances`` in ``evidence``:
+        when two or more effects were named, what the held-out mean square
+        loses without each once the others are in).
 
         Returns
         -------
@@ -298,6 +301,11 @@ class Diagnosis:
             lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+            loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
+            if loss is not None:
+                lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
+                             f"{loss:.3g} noise variances" + (" -- dropped at the revision" if st.get("dropped")
+                                                               else ""))
             for a in st.get("alternatives", []):
                 lines.append(f"  near tie: {a['effect']} ({a['kind']}) lowers the held-out mean square by "
                              f"{a['held_out_gain_noise_variances']:.3g} noise variances against "

@@ -679,7 +679,9 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
             steps[j]["evidence"]["revised"] = revisions[-1]
             chosen[j], chosen_kinds[j] = cls.effect, alt
             struct, cur = st, pt
-    # backward: drop what a later effect made redundant
+    # backward: drop what a later effect made redundant (`live`: the step of
+    # each chosen part; a dropped step stays in `steps`, marked)
+    live = list(range(len(chosen_kinds)))
     j = 0
     while j < len(chosen_kinds) and len(chosen_kinds) > 1:
         kind = chosen_kinds[j]
@@ -692,16 +694,20 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
             j += 1
             continue
         before, after = rms_val(cur), rms_val(pt)
+        # what the part still adds with every other effect in: the held-out mean
+        # square it saves, in noise variances (kept at MIN_GAIN or more)
+        steps[live[j]]["evidence"]["held_out_loss_without_it_noise_variances"] = round(
+            (after ** 2 - before ** 2) / s2, 3)
         if after ** 2 - before ** 2 < MIN_GAIN * s2:
             say(f"revise: {chosen[j]} ({kind}) dropped: without it the held-out RMS is {after:.4g} "
                 f"(with it {before:.4g})")
-            revisions.append({"step": j + 1, "replaced": kind, "by": None, "effect_before": chosen[j],
+            revisions.append({"step": live[j] + 1, "replaced": kind, "by": None, "effect_before": chosen[j],
                               "effect_after": None, "rms_before": before, "rms_after": after,
                               "reason": f"redundant once the later effects are in: it lowers the held-out mean "
                                         f"square by less than {MIN_GAIN} noise variances"})
-            steps[j]["evidence"]["revised"] = revisions[-1]
-            steps[j]["dropped"] = True
-            del chosen[j], chosen_kinds[j]
+            steps[live[j]]["evidence"]["revised"] = revisions[-1]
+            steps[live[j]]["dropped"] = True
+            del chosen[j], chosen_kinds[j], live[j]
             struct, cur = st, pt
         else:
             say(f"revise: {chosen[j]} ({kind}) kept: without it {after:.4g} (with it {before:.4g})")

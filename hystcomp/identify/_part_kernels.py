@@ -17,6 +17,15 @@ Viscous plays: with ``decay = exp(-dt / tau) > 0`` a play outside its band
 c) decay`` with ``c`` the clamped value: the overstress law of Perzyna
 (1966), ``dw/dt = -(w - c) / tau``, exact per sample for an input held
 over the sample.  ``decay = 0`` is the rate-independent play.
+
+Thermally activated plays: with ``overstress_scale = s > 0`` as well, the
+overstress relaxes by Eyring's law of activated flow (Eyring, J. Chem. Phys.
+4 (1936) 283; the sinh flow law of viscoplasticity), ``d|w - c|/dt = -(s /
+tau) sinh(|w - c| / s)``: like Perzyna's for overstresses well below ``s``,
+far faster above.  Over a sample with the input held, ``tanh(|w - c| / 2s)``
+falls by the factor ``exp(-dt / tau)`` (separate the variables: ``dE /
+sinh(E) = d ln tanh(E/2)``), so ``|w - c| <- 2 s artanh(tanh(|w - c| / 2s)
+decay)``, exact and stable for any step.
 """
 
 import math
@@ -44,7 +53,8 @@ def _clamp(w, lo, hi):
 
 
 @njit(cache=True)
-def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0):
+def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0,
+                 overstress_scale=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
 
     x : input (scaled), r : thresholds (scaled, r[0] may be 0), beta : rate
@@ -57,6 +67,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
     wider at one end of the stroke than at the other).  decay : viscous
     plays (see the module docstring; the preload is applied at rest, fully
     relaxed, and the play with ``r_i = 0`` stays the input itself).
+    overstress_scale : with ``decay > 0``, the viscous plays relax by
+    Eyring's law of activated flow with this scale (scaled input units; 0:
+    Perzyna's linear law).
     """
     N = r.size
     w = np.zeros(N)
@@ -102,7 +115,13 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             hi = _env(xi + ri, qr, br)
             wi = _clamp(w[i], lo, hi)
             if decay > 0.0 and r[i] > 0.0:
-                wi = wi + (w[i] - wi) * decay
+                if overstress_scale > 0.0:
+                    e = w[i] - wi
+                    if e != 0.0:
+                        a = 2.0 * math.atanh(math.tanh(0.5 * abs(e) / overstress_scale) * decay)
+                        wi = wi + math.copysign(a * overstress_scale, e)
+                else:
+                    wi = wi + (w[i] - wi) * decay
             w[i] = wi
             out[k, i] = wi
 

@@ -7,7 +7,7 @@ from collections import OrderedDict, namedtuple
 
 import numpy as np
 
-__all__ = ["Parameter", "Context", "Part", "register", "PARTS", "SLOTS"]
+__all__ = ["Parameter", "Context", "Part", "register", "PARTS", "SLOTS", "creep_time_range"]
 
 
 Parameter = namedtuple("Parameter", ["name", "initial", "lower", "upper", "log", "reach"], defaults=(None,))
@@ -263,7 +263,7 @@ def register(cls):
     Examples
     --------
     >>> sorted(k for k, c in PARTS.items() if c.effect == "rate_dependence")
-    ['input_lag', 'input_slew', 'output_lag', 'output_resonance', 'rate_term', 'rate_thresholds', 'viscous_plays']
+    ['activated_plays', 'input_lag', 'input_slew', 'output_lag', 'output_resonance', 'rate_term', 'rate_thresholds', 'viscous_plays']
     """
     if not (isinstance(cls, type) and issubclass(cls, Part)):
         raise TypeError(f"Parameter cls is {cls!r} but should be a subclass of Part")
@@ -273,3 +273,22 @@ def register(cls):
         raise ValueError(f"Part {cls.__name__} has no kind (a unique name)")
     PARTS[cls.kind] = cls
     return cls
+
+
+def creep_time_range(ctx):
+    """The time constants [s] the creep part spans, ``(shortest, longest)``:
+    from ``max(20 dt, T/2000)`` (at most a tenth of the longest) to the
+    record's length ``T`` (at least 10 dt).  A part of another effect whose
+    own relaxation would reach into this range (a viscous play relaxing for
+    seconds after a step) would draw creep; such parts keep their time
+    constants below it.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(20_000), 1e-3, 0.0, 1.0, 20.0)
+    >>> creep_time_range(ctx)
+    (0.02, 20.0)
+    """
+    hi = max(ctx.duration, 10 * ctx.dt)
+    lo = min(max(20 * ctx.dt, ctx.duration / 2000), hi / 10)
+    return lo, hi

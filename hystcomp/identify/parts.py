@@ -15,7 +15,7 @@ in one of five places (its ``slot``), applied in this order:
     sets options of the hysteresis core's plays (:class:`Asymmetry` and
     :class:`Saturation`: envelopes, eq. 23; :class:`RateThresholds`:
     ``r_i + beta |dv/dt|``; :class:`ViscousPlays`: plays relaxing at a
-    finite rate; :class:`InitialState`: a preload history);
+    finite rate; :class:`ActivatedPlays`: relaxing by Eyring's sinh law; :class:`InitialState`: a preload history);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
     a linear stage after the hysteresis; :class:`GainDrift`,
@@ -45,14 +45,15 @@ importing this module registers every built-in part, in one place.
 """
 
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
-from .parts_core import (Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
+from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, Saturation, ViscousPlays)
 from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
-__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "LevelThresholds",
+__all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
+           "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

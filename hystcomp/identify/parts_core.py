@@ -8,7 +8,7 @@ envelopes, eq. 23, and an initial state).
 import numpy as np
 
 from ._part_kernels import core_columns
-from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
+from .part_base import Context, Parameter, Part, creep_time_range, register  # noqa: F401 (Context: the examples)
 
 __all__ = ["PICore", "Offset", "RateThresholds", "ViscousPlays", "Asymmetry", "LevelThresholds", "Saturation", "InitialState"]
 
@@ -45,7 +45,8 @@ class PICore(Part):
         core_columns(np.ascontiguousarray(x), ctx.thresholds, beta, inv_dt, float(options.get("rho", 1.0)),
                      float(options.get("ql", 0.0)), float(options.get("qr", 0.0)), float(options.get("bl", 0.0)),
                      float(options.get("br", 0.0)), pre, out, float(options.get("shift", 0.0)),
-                     float(options.get("level", 0.0)), float(options.get("decay", 0.0)))
+                     float(options.get("level", 0.0)), float(options.get("decay", 0.0)),
+                     float(options.get("overstress_scale", 0.0)))
         return out
 
 
@@ -151,6 +152,55 @@ class ViscousPlays(Part):
 
     def core_options(self, values, ctx, options):
         options["decay"] = float(np.exp(-ctx.dt / values["time_constant"]))
+
+
+@register
+class ActivatedPlays(ViscousPlays):
+    """Viscous plays whose overstress relaxes by Eyring's law of thermally
+    activated flow (Eyring, J. Chem. Phys. 4 (1936) 283; the sinh flow law
+    of viscoplasticity and of piezoceramic domain-wall motion):
+    ``d|w - c|/dt = -(s / tau) sinh(|w - c| / s)`` with ``c`` the
+    rate-independent play's value.  Below the overstress scale ``s`` (in
+    scaled input units) it is Perzyna's linear law of
+    :class:`ViscousPlays` with time constant ``tau``; above it the states
+    catch up exponentially faster, so the loops widen with the drive's rate
+    less than in proportion and a fast sweep is not smeared out as by a
+    linear viscosity.  ``s -> infinity`` is :class:`ViscousPlays`.  Its
+    time constant stays below the creep part's (:func:`creep_time_range`):
+    the sinh law relaxing for seconds after a step is logarithmic creep.
+
+    Examples
+    --------
+    >>> ctx = Context(np.linspace(0, 1, 11), 0.01, 0.0, 1.0, 0.11)
+    >>> opts = {}
+    >>> ActivatedPlays().core_options({"time_constant": 0.01, "overstress_scale": 0.05}, ctx, opts)
+    >>> round(opts["decay"], 6), opts["overstress_scale"]
+    (0.367879, 0.05)
+    """
+
+    kind = "activated_plays"
+    order = 13
+    description = "thermally activated plays (overstress relaxing as sinh(overstress / s), time constant tau)"
+
+    def _bounds(self, ctx):
+        # below the creep part's time constants: relaxing by the sinh law for
+        # seconds after a step is logarithmic creep (the law's classical origin),
+        # and a play that did so would name creep "rate dependence"
+        lo, hi = super()._bounds(ctx)
+        return lo, max(min(hi, creep_time_range(ctx)[0]), 10.0 * lo)
+
+    def parameters(self, ctx, kinds):
+        return super().parameters(ctx, kinds) + [Parameter("overstress_scale", 0.05, 1e-3, 1.0, True)]
+
+    def initial_values(self, ctx, kinds):
+        # the viscous plays' middle time constants (4, 16 and 64 samples, within the
+        # bounds), each with a small and a moderate overstress scale (1 and 5 % of the
+        # input scale)
+        return [dict(d, overstress_scale=s) for d in super().initial_values(ctx, kinds)[1:4] for s in (0.01, 0.05)]
+
+    def core_options(self, values, ctx, options):
+        super().core_options(values, ctx, options)
+        options["overstress_scale"] = float(values["overstress_scale"])
 
 
 @register

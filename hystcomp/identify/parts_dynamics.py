@@ -9,7 +9,7 @@ import numpy as np
 
 from ..effects import LinearStage, lag_bank
 from ._part_kernels import drifting_delay, fractional_delay, slew_limit
-from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
+from .part_base import Context, Parameter, Part, creep_time_range, register  # noqa: F401 (Context: the examples)
 
 __all__ = ["Delay", "DriftingDelay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "OutputQuadratic", "OutputCubic", "OutputHinge", "Drift", "SlowDrift", "SensorDrift"]
@@ -437,8 +437,7 @@ class Creep(Part):
         # up to the record's length: logarithmic and power-law creep relax on every time
         # scale the record covers (Jung & Gweon 2000), and a bank that stops at T/4 leaves
         # their slow part as a trend (measured: 1.5-2.0 noise floors left on log creep)
-        hi = max(ctx.duration, 10 * ctx.dt)
-        lo = min(max(20 * ctx.dt, ctx.duration / 2000), hi / 10)
+        lo, hi = creep_time_range(ctx)
         m = max(3, int(round(np.log10(hi / lo) * 2)) + 1)
         return np.geomspace(lo, hi, m)
 

@@ -81,6 +81,7 @@ class _Stepper:
         self.shift = float(options.get("shift", 0.0))
         self.level = float(options.get("level", 0.0))
         self.decay = float(options.get("decay", 0.0))
+        self.overstress_scale = float(options.get("overstress_scale", 0.0))
         self.preload = [float(u) for u in options.get("preload", ())]
         theta = model.theta
         k = self.r.size
@@ -175,7 +176,14 @@ class _Stepper:
         c = np.maximum(np.minimum(wb, hi), lo)
         if self.decay > 0.0 and not at_rest:
             # viscous plays relax towards the band (the preload, at rest, is fully relaxed)
-            c = np.where(pos, c + (wb - c) * self.decay, c)
+            if self.overstress_scale > 0.0:
+                # Eyring's sinh law (see identify._part_kernels): tanh(|w - c| / 2s) falls by decay
+                s_ = self.overstress_scale
+                e = wb - c
+                a = 2.0 * s_ * np.arctanh(np.tanh(0.5 * np.abs(e) / s_) * self.decay)
+                c = np.where(pos, c + np.copysign(a, e), c)
+            else:
+                c = np.where(pos, c + (wb - c) * self.decay, c)
         return c
 
     def output(self, x, commit=False):
