@@ -304,7 +304,7 @@ class Diagnosis:
             loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
             if loss is not None:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
-                             f"{loss:.3g} noise variances" + (" -- dropped at the revision" if st.get("dropped")
+                             f"{loss + 0.0:.3g} noise variances" + (" -- dropped at the revision" if st.get("dropped")
                                                                else ""))
             for a in st.get("alternatives", []):
                 lines.append(f"  near tie: {a['effect']} ({a['kind']}) lowers the held-out mean square by "
