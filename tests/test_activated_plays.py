@@ -11,6 +11,7 @@ from scipy.optimize import brentq
 
 from hystcomp.identify._part_kernels import core_columns
 from hystcomp.identify.parts import ActivatedPlays, Context
+from test_viscous_plays import assert_named_with_part_and_inverts
 
 
 def _columns(x, r, decay, s):
@@ -126,19 +127,4 @@ def _activated_record(seed=0):
 
 
 def test_activated_plays_are_named_rate_dependence_and_the_model_inverts():
-    from hystcomp.diagnose import diagnose
-
-    t, v, y = _activated_record()
-    rep = diagnose(t, v, y, progress=False)
-    assert rep.effects == ["rate_dependence"], rep.report()
-    kinds = [d["kind"] for d in rep.model.describe()]
-    assert "activated_plays" in kinds, rep.report()
-    held = ~rep._rec.train
-    rms = np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2))
-    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
-    assert rep.verdict == "explained" and rep.rms_heldout < 1.5 * rep.noise_floor, rep.report()
-    # the exact inverse steps the same activated plays: model(inverse(r)) = r
-    k = 4000
-    ref = 0.8 * rep.model.simulate(v)[:k]
-    u = rep.model.exact_inverse().simulate(ref)
-    assert np.max(np.abs(rep.model.simulate(u) - ref)) < 1e-6 * np.ptp(ref)
+    assert_named_with_part_and_inverts(*_activated_record(), "activated_plays")
