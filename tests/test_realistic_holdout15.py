@@ -1,5 +1,5 @@
-"""HOLDOUT15 (tests/realistic/cases_holdout15.py, laws in mechanisms15.py): well formed, not yet in ALL (the lead joins
-it after the measurement), and every mechanism follows its law. Nothing here runs the diagnosis.
+"""HOLDOUT15 (tests/realistic/cases_holdout15.py, laws in mechanisms15.py): well formed, in ALL (joined after its one
+measurement in round 17), and every mechanism follows its law. Nothing here runs the diagnosis.
 
 Tolerances: a record that is its stated law plus the sensor noise leaves a residual RMS within 1.5 sigma of the law
 (the noise alone gives 1.0; the monitor noise, up to 4e-4 of the input span, adds at most 0.3 sigma through a core
@@ -18,10 +18,10 @@ from scipy.integrate import quad, solve_ivp
 from scipy.optimize import brentq
 from scipy.signal import freqz
 
-from realistic import ALL, HOLDOUT15, family
+from realistic import HOLDOUT15, family
 from realistic import mechanisms as me
 from realistic import mechanisms15 as m15
-from test_realistic_generator import _assert_set_layout, _assert_well_formed, _lag_samples
+from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
 
 P = "holdout15_"
 #: the effect names the set expects (seven families)
@@ -59,28 +59,10 @@ def _linear_misfit(y, x):
 
 # ---- the set ----
 
-def test_holdout15_is_well_formed_and_not_yet_in_all():
+def test_holdout15_joined_all_and_is_well_formed():
     H = HOLDOUT15
-    # not in ALL until the lead has measured it (then this flips to set(H) <= set(ALL))
-    assert not set(H) & set(ALL) and len(H) == 10
-    assert all(n.startswith(P) for n in H)
-    # what _assert_measured_set asks of a measured set, on the cached records
-    verdicts, first = set(), {}
-    for name in H:
-        recs = [_rec(name[len(P):], s) for s in range(3)]
-        for r in recs:
-            _assert_well_formed(r, name)
-            assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
-        verdicts.add(recs[0].expect_verdict)
-        first[name] = recs[0]
-        assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
-        assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
-    assert verdicts == {"explained", "unexplained", "either"}
-    assert {e for r in first.values() for e in r.expect_effects} == EFFECTS
-    assert sum(not r.expect_effects and r.expect_verdict == "explained" for r in first.values()) == 1
-    assert sum(not r.expect_effects and r.expect_verdict == "unexplained" for r in first.values()) == 1
-    assert sum(len(family(r.expect_effects)) == 2 for r in first.values()) == 1
-    assert all(len(r.expect_effects) <= 2 for r in first.values())
+    # measured once in round 17 (20 of 30 right), in ALL since
+    first = _assert_measured_set(H, P, EFFECTS)
     _assert_set_layout(H, P, first, _rec, MONITORED, others_carry_drive=True)
     assert len(family(EFFECTS)) == 7
     pair = first[P + PAIR]
