@@ -216,6 +216,35 @@ def test_holdout7_was_measured_joined_all_and_is_well_formed():
     assert any(len(HOLDOUT7[n](0).expect_effects) == 2 for n in HOLDOUT7)
 
 
+def _rms(x):
+    return float(np.sqrt(np.mean(np.square(x))))
+
+
+def _linear_misfit(y, x):
+    """The largest residual of the best straight line y ~ a x + b."""
+    A = np.c_[x, np.ones_like(x)]
+    return float(np.abs(y - A @ np.linalg.lstsq(A, y, rcond=None)[0]).max())
+
+
+def _assert_spans_and_rates(H, prefix, first, rec, unipolar):
+    """A later set's drives: 10,000 ... 40,000 samples, unipolar (0 ... 100 V) where
+    `unipolar` says, else bipolar beyond +-35 V within +-55 V; the ten sampling rates
+    distinct, each name ending with it."""
+    for name in H:
+        short = name[len(prefix):]
+        for s in range(3):
+            r = rec(short, s)
+            v = r.extra.get("drive", r.v)
+            assert 10_000 <= len(v) <= 40_000
+            if short in unipolar:
+                assert v.min() > -5 and 85 < v.max() <= 100
+            else:
+                assert v.min() < -35 and 35 < v.max() < 55
+    rates = {name: round(1 / (r.t[1] - r.t[0])) for name, r in first.items()}
+    assert len(set(rates.values())) == 10
+    assert all(name.endswith(f"_{hz}hz") for name, hz in rates.items())
+
+
 def _lag_samples(y, x, max_lag=8.0):
     """The lag of y behind x in samples: the fractional shift of x that maximises the
     (normalised) cross-correlation with y over a fixed window. Normalising by the window's

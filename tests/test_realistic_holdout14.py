@@ -19,7 +19,8 @@ from scipy.integrate import solve_ivp
 from realistic import HOLDOUT14, family
 from realistic import mechanisms as me
 from realistic import mechanisms14 as m14
-from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
+from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates, _lag_samples,
+                                      _linear_misfit, _rms)
 
 P = "holdout14_"
 #: the effect names the set expects (seven families)
@@ -45,16 +46,6 @@ def _rec(name, seed):
     return HOLDOUT14[P + name](seed)
 
 
-def _rms(x):
-    return float(np.sqrt(np.mean(np.square(x))))
-
-
-def _linear_misfit(y, x):
-    """The largest residual of the best straight line y ~ a x + b."""
-    A = np.c_[x, np.ones_like(x)]
-    return float(np.abs(y - A @ np.linalg.lstsq(A, y, rcond=None)[0]).max())
-
-
 # ---- the set ----
 
 def test_holdout14_joined_all_and_is_well_formed():
@@ -66,20 +57,8 @@ def test_holdout14_joined_all_and_is_well_formed():
     assert pair.expect_effects == {"asymmetry", "drift"} and pair.expect_verdict == "either"
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
-    for name in H:
-        short = name[len(P):]
-        for s in range(3):
-            r = _rec(short, s)
-            v = r.extra.get("drive", r.v)
-            assert 10_000 <= len(v) <= 40_000
-            if short in UNIPOLAR:
-                assert v.min() > -5 and 85 < v.max() <= 100
-            else:
-                assert v.min() < -35 and 35 < v.max() < 55
-    # rates 250 Hz ... 2 kHz, all ten distinct, each name ending with it
-    rates = {name: round(1 / (r.t[1] - r.t[0])) for name, r in first.items()}
-    assert len(set(rates.values())) == 10
-    assert all(name.endswith(f"_{hz}hz") for name, hz in rates.items())
+    # rates 250 Hz ... 2 kHz, the spans; all ten rates distinct, each name ending with it
+    _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
 
 
 # ---- clean: Weibull plays under a monotone cubic through random knots ----

@@ -21,7 +21,8 @@ from scipy.signal import freqz
 from realistic import HOLDOUT15, family
 from realistic import mechanisms as me
 from realistic import mechanisms15 as m15
-from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
+from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates, _lag_samples,
+                                      _linear_misfit, _rms)
 
 P = "holdout15_"
 #: the effect names the set expects (seven families)
@@ -47,16 +48,6 @@ def _rec(name, seed):
     return HOLDOUT15[P + name](seed)
 
 
-def _rms(x):
-    return float(np.sqrt(np.mean(np.square(x))))
-
-
-def _linear_misfit(y, x):
-    """The largest residual of the best straight line y ~ a x + b."""
-    A = np.c_[x, np.ones_like(x)]
-    return float(np.abs(y - A @ np.linalg.lstsq(A, y, rcond=None)[0]).max())
-
-
 # ---- the set ----
 
 def test_holdout15_joined_all_and_is_well_formed():
@@ -69,20 +60,8 @@ def test_holdout15_joined_all_and_is_well_formed():
     assert pair.expect_effects == {"rate_dependence", "asymmetry"} and pair.expect_verdict == "either"
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
-    for name in H:
-        short = name[len(P):]
-        for s in range(3):
-            r = _rec(short, s)
-            v = r.extra.get("drive", r.v)
-            assert 10_000 <= len(v) <= 40_000
-            if short in UNIPOLAR:
-                assert v.min() > -5 and 85 < v.max() <= 100
-            else:
-                assert v.min() < -35 and 35 < v.max() < 55
-    # rates 290 Hz ... 1.95 kHz, all ten distinct, each name ending with it
-    rates = {name: round(1 / (r.t[1] - r.t[0])) for name, r in first.items()}
-    assert len(set(rates.values())) == 10
-    assert all(name.endswith(f"_{hz}hz") for name, hz in rates.items())
+    # rates 290 Hz ... 1.95 kHz, the spans; all ten rates distinct, each name ending with it
+    _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
 
 
 # ---- clean: beta plays under the Lorenz system ----
