@@ -9,15 +9,8 @@ import pytest
 from scipy.integrate import quad
 from scipy.optimize import brentq
 
-from hystcomp.identify._part_kernels import core_columns
 from hystcomp.identify.parts import ActivatedPlays, Context
-from test_viscous_plays import assert_named_with_part_and_inverts
-
-
-def _columns(x, r, decay, s):
-    out = np.empty((x.size, r.size))
-    core_columns(x, r, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, np.zeros(0), out, 0.0, 0.0, decay, s)
-    return out
+from test_viscous_plays import _columns, assert_named_with_part_and_inverts
 
 
 def _eyring_ode(x, r, dt, tau, s):

@@ -28,9 +28,10 @@ def _perzyna_plays(x, r, dt, tau):
     return out
 
 
-def _columns(x, r, decay):
+def _columns(x, r, decay, overstress_scale=0.0):
+    """The kernel's viscous plays (Perzyna; with an overstress scale, Eyring's sinh law)."""
     out = np.empty((x.size, r.size))
-    core_columns(x, r, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, np.zeros(0), out, 0.0, 0.0, decay)
+    core_columns(x, r, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, np.zeros(0), out, 0.0, 0.0, decay, overstress_scale)
     return out
 
 
