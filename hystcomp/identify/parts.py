@@ -15,7 +15,8 @@ in one of five places (its ``slot``), applied in this order:
     sets options of the hysteresis core's plays (:class:`Asymmetry` and
     :class:`Saturation`: envelopes, eq. 23; :class:`RateThresholds`:
     ``r_i + beta |dv/dt|``; :class:`ViscousPlays`: plays relaxing at a
-    finite rate; :class:`ActivatedPlays`: relaxing by Eyring's sinh law; :class:`InitialState`: a preload history);
+    finite rate; :class:`ActivatedPlays`: relaxing by Eyring's sinh law;
+    :class:`InitialState`: a preload history);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
     a linear stage after the hysteresis; :class:`GainDrift`,

@@ -10,7 +10,8 @@ import numpy as np
 from ._part_kernels import core_columns
 from .part_base import Context, Parameter, Part, creep_time_range, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["PICore", "Offset", "RateThresholds", "ViscousPlays", "Asymmetry", "LevelThresholds", "Saturation", "InitialState"]
+__all__ = ["PICore", "Offset", "RateThresholds", "ViscousPlays", "ActivatedPlays", "Asymmetry", "LevelThresholds",
+           "Saturation", "InitialState"]
 
 
 # ----------------------------------------------------------------------------
@@ -158,7 +159,7 @@ class ViscousPlays(Part):
 class ActivatedPlays(ViscousPlays):
     """Viscous plays whose overstress relaxes by Eyring's law of thermally
     activated flow (Eyring, J. Chem. Phys. 4 (1936) 283; the sinh flow law
-    of viscoplasticity and of piezoceramic domain-wall motion):
+    of viscoplasticity):
     ``d|w - c|/dt = -(s / tau) sinh(|w - c| / s)`` with ``c`` the
     rate-independent play's value.  Below the overstress scale ``s`` (in
     scaled input units) it is Perzyna's linear law of
@@ -167,7 +168,9 @@ class ActivatedPlays(ViscousPlays):
     less than in proportion and a fast sweep is not smeared out as by a
     linear viscosity.  ``s -> infinity`` is :class:`ViscousPlays`.  Its
     time constant stays below the creep part's (:func:`creep_time_range`):
-    the sinh law relaxing for seconds after a step is logarithmic creep.
+    from a large overstress the sinh law relaxes logarithmically in time
+    (``E = |w - c|/s >> 1``: ``sinh E ~ e^E / 2``, so ``E(t) = -ln(e^-E0 +
+    t / 2 tau)``), and with a time constant of seconds that is log creep.
 
     Examples
     --------
@@ -183,8 +186,8 @@ class ActivatedPlays(ViscousPlays):
     description = "thermally activated plays (overstress relaxing as sinh(overstress / s), time constant tau)"
 
     def _bounds(self, ctx):
-        # below the creep part's time constants: relaxing by the sinh law for
-        # seconds after a step is logarithmic creep (the law's classical origin),
+        # below the creep part's time constants: the sinh law relaxing for
+        # seconds after a step is logarithmic creep (see the class docstring),
         # and a play that did so would name creep "rate dependence"
         lo, hi = super()._bounds(ctx)
         return lo, max(min(hi, creep_time_range(ctx)[0]), 10.0 * lo)
