@@ -41,6 +41,8 @@ how the diagnosis decides, and run once for the fifteenth round's measurement (d
 :data:`HOLDOUT15` (``cases_holdout15.py``) was written after HOLDOUT14 was measured, by a session that did not read
 how the diagnosis decides, and run once for the seventeenth round's measurement (docs/diagnose.md, commit aba4dda,
 20 of 30 runs right); it is part of :data:`ALL` since.
+:data:`HOLDOUT16` (``cases_holdout16.py``) was written after HOLDOUT15 was measured, by a session that did not read
+how the diagnosis decides, to be run once for the eighteenth round's measurement; it is not part of :data:`ALL` yet.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -60,10 +62,11 @@ from .cases_holdout12 import HOLDOUT12  # noqa: F401
 from .cases_holdout13 import HOLDOUT13  # noqa: F401
 from .cases_holdout14 import HOLDOUT14  # noqa: F401
 from .cases_holdout15 import HOLDOUT15  # noqa: F401
+from .cases_holdout16 import HOLDOUT16  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
        **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
-           "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "HOLDOUT15", "ALL"]
+           "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "HOLDOUT15", "HOLDOUT16", "ALL"]
