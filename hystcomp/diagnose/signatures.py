@@ -342,6 +342,14 @@ def evidence(rec, e, pred, sigma, only=None):
         k1 = int(max(lo[0], hi[0])) + 1 if lo.size and hi.size else n
         ends = sorted({int(f * n) for f in (0.05, 0.1, 0.2)} | ({k1} if 10 <= k1 <= 0.6 * n else set()))
         k_idx = np.arange(n)
+        # windows by the input's reach: a play of threshold r keeps its memory until the input
+        # has run over 2 r (the running range max - min); under excursions that grow slowly
+        # the memory fades in steps as the reach grows, not within a set share of the time
+        reach = (np.maximum.accumulate(rec.v) - np.minimum.accumulate(rec.v)) / rec.span
+        for q in (0.4, 0.6, 0.8):
+            k = int(np.searchsorted(reach, q))
+            if 0.2 * n < k <= 0.9 * n and all(abs(k - k0) > 0.05 * n for k0 in ends):
+                ends.append(k)
         F = np.column_stack([c for k in ends for c in ((k_idx < k).astype(float), (k_idx < k) * xc)])
         tn = k_idx / (n - 1) - 0.5
         Nt = np.column_stack([N, tn, tn ** 2])
