@@ -276,6 +276,29 @@ def test_part_core_kernel_rate_independent_branch(rho, ql, qr, shift, level):
             np.testing.assert_allclose(fast @ np.concatenate([[1.0], W]), pi.simulate(V), atol=1e-12)
 
 
+@pytest.mark.parametrize("decay, overstress_scale", [(0.9, 0.0), (0.3, 0.0), (0.9, 0.05), (0.995, 0.4)])
+@pytest.mark.parametrize("rho, ql, qr, shift, level", [(1.0, 0.0, 0.0, 0.0, 0.0), (1.3, 0.1, -0.15, 0.05, 0.4)])
+def test_part_core_kernel_viscous_branch(decay, overstress_scale, rho, ql, qr, shift, level):
+    """The kernel's branch for viscous and thermally activated plays with
+    polynomial envelopes and fixed thresholds (round 18) gives the same
+    floats as its general loop, with and without a preload history."""
+    from hystcomp.identify._part_kernels import core_columns
+
+    r_all = np.concatenate([[0.0], R])
+    for preload in (np.zeros(0), np.array([0.9, -0.4])):
+        fast = np.empty((V.size, r_all.size))
+        core_columns(V, r_all, 0.0, 0.0, rho, ql, qr, 0.0, 0.0, preload, fast, shift, level, decay,
+                     overstress_scale)
+        general = np.empty_like(fast)     # as above: the general loop with a rate term of exactly 0
+        core_columns(V, r_all, 1e-300, 0.0, rho, ql, qr, 0.0, 0.0, preload, general, shift, level, decay,
+                     overstress_scale)
+        np.testing.assert_array_equal(fast, general)
+        # and the plays do relax: not the rate-independent ones
+        plain = np.empty_like(fast)
+        core_columns(V, r_all, 0.0, 0.0, rho, ql, qr, 0.0, 0.0, preload, plain, shift, level)
+        assert not np.allclose(fast, plain)
+
+
 def test_bad_arguments_are_named():
     with pytest.raises(ValueError, match="time_constant"):
         LinearStage.lag(-1.0, DT)

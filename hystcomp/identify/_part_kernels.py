@@ -25,7 +25,10 @@ tau) sinh(|w - c| / s)``: like Perzyna's for overstresses well below ``s``,
 far faster above.  Over a sample with the input held, ``tanh(|w - c| / 2s)``
 falls by the factor ``exp(-dt / tau)`` (separate the variables: ``dE /
 sinh(E) = d ln tanh(E/2)``), so ``|w - c| <- 2 s artanh(tanh(|w - c| / 2s)
-decay)``, exact and stable for any step.
+decay)``, exact and stable for any step.  With ``z = exp(-|w - c| / s) - 1``
+and ``D = decay`` that is ``s log1p(-2 D z / (2 + z (1 + D)))`` (``tanh(E/2)
+= -z / (2 + z)``, ``artanh(T) = log1p(2T / (1 - T)) / 2``): one ``expm1``
+and one ``log1p``, a quarter faster than ``tanh`` and ``artanh``.
 """
 
 import math
@@ -102,6 +105,36 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
                 w[i] = wi
                 out[k, i] = wi
         return
+    if beta == 0.0 and bl == 0.0 and br == 0.0:
+        # viscous or activated plays with polynomial envelopes and fixed thresholds:
+        # the general loop's expressions without its rate and tanh terms (the same
+        # floats, 1.5-2.5 times faster)
+        for k in range(x.size):
+            xk = x[k]
+            grow = max(1.0 + level * xk, 0.05)
+            for i in range(N):
+                if r[i] > 0.0:
+                    ri = r[i] * grow
+                    xi = xk - shift
+                else:
+                    ri = 0.0
+                    xi = xk
+                s = xi - ri
+                lo = rho * (s + ql * s * s)
+                s = xi + ri
+                wi = _clamp(w[i], lo, s + qr * s * s)
+                if r[i] > 0.0:
+                    e = w[i] - wi
+                    if overstress_scale > 0.0:
+                        if e != 0.0:
+                            z = math.expm1(-abs(e) / overstress_scale)
+                            a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
+                            wi = wi + math.copysign(a * overstress_scale, e)
+                    else:
+                        wi = wi + e * decay
+                w[i] = wi
+                out[k, i] = wi
+        return
     prev = x[0] if x.size else 0.0
     for k in range(x.size):
         xk = x[k]
@@ -118,7 +151,8 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
                 if overstress_scale > 0.0:
                     e = w[i] - wi
                     if e != 0.0:
-                        a = 2.0 * math.atanh(math.tanh(0.5 * abs(e) / overstress_scale) * decay)
+                        z = math.expm1(-abs(e) / overstress_scale)
+                        a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
                         wi = wi + math.copysign(a * overstress_scale, e)
                 else:
                     wi = wi + (w[i] - wi) * decay

@@ -180,7 +180,8 @@ class _Stepper:
                 # Eyring's sinh law (see identify._part_kernels): tanh(|w - c| / 2s) falls by decay
                 s_ = self.overstress_scale
                 e = wb - c
-                a = 2.0 * s_ * np.arctanh(np.tanh(0.5 * np.abs(e) / s_) * self.decay)
+                z = np.expm1(-np.abs(e) / s_)
+                a = s_ * np.log1p(-2.0 * self.decay * z / (2.0 + z * (1.0 + self.decay)))
                 c = np.where(pos, c + np.copysign(a, e), c)
             else:
                 c = np.where(pos, c + (wb - c) * self.decay, c)

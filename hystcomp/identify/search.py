@@ -275,13 +275,13 @@ class VariableProjection:
         # goes further (the held-out part, another record)
         k_core = sum(1 for nm in names if nm.startswith("p") and nm[1:].isdigit())
         still = np.zeros(len(names), bool)
-        Cr = _rows(C, rows)
-        if k_core > 1 and Cr.shape[0]:
-            moves = column_ranges(Cr, k_core)
+        block = self._plays_block(C, rows, k_core)
+        Cr, moves = block["rows"], block["moves"]
+        if moves is not None:
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
         theta = self._solve(Cr, _rows(F, rows), _rows(target, rows), sw, still, lower, upper,
-                            self._plays_gram(C, Cr, rows) if sw is None else None)
+                            self._plays_gram(block) if sw is None else None)
         u = C @ theta[:k_c] + F @ theta[k_c:]
         ov = values.get(out.kind, {}) if out is not None else {}
         pred = u if out is None else out.output(u, ov, ctx)
@@ -309,26 +309,44 @@ class VariableProjection:
         k = int(np.sum(theta != 0)) + len(structure.parameters(ctx))
         return FitPoint(values, theta, pred, float(e @ e), int(self.train.sum()), k, names)
 
-    def _plays_gram(self, C, Cr, rows):
-        """``Cr^T Cr`` of the memoised play block `C` (read-only) on the
-        fitted rows, kept for the last :data:`CORE_CACHE` blocks and row
-        sets: the candidates after the core (additive columns, the output
-        map) solve with the same plays many times.  None for a block that
-        is not memoised (a filter made it)."""
+    def _plays_block(self, C, rows, k_core):
+        """The play block `C` on the fitted `rows`: ``{"rows": C[rows],
+        "moves": the ranges of its first k_core columns (None for fewer than
+        two plays or no rows), "gram": its Gram matrix, formed when first
+        asked for (:meth:`_plays_gram`)}``.  For a memoised block (read-only)
+        it is kept for the last :data:`CORE_CACHE` blocks and row sets: the
+        candidates after the core (additive columns, the output map) solve
+        with the same plays many times, and the rows' copy (blocks held out
+        inside the record), their ranges and Gram matrix are the same each
+        time.  A block a filter made (writeable) is never kept."""
+        def fresh():
+            Cr = _rows(C, rows)
+            moves = column_ranges(Cr, k_core) if k_core > 1 and Cr.shape[0] else None
+            return {"rows": Cr, "moves": moves, "gram": None}
+
         if C.flags.writeable:
-            return None
+            return fresh()
         k = int(np.count_nonzero(rows))
         rk = (k,) if k == rows.size or rows[:k].all() else hashlib.blake2b(rows.tobytes(), digest_size=16).digest()
-        key = (id(C), rk)
+        key = (id(C), rk, k_core)
         hit = self._gram_cache.get(key)
         if hit is not None and hit[0] is C:
             self._gram_cache.move_to_end(key)
             return hit[1]
-        G = Cr.T @ Cr
-        self._gram_cache[key] = (C, G)
+        block = fresh()
+        self._gram_cache[key] = (C, block)
         while len(self._gram_cache) > CORE_CACHE:
             self._gram_cache.popitem(last=False)
-        return G
+        return block
+
+    @staticmethod
+    def _plays_gram(block):
+        """``Cr^T Cr`` of a play block from :meth:`_plays_block` (formed once
+        and kept in it)."""
+        if block["gram"] is None:
+            Cr = block["rows"]
+            block["gram"] = Cr.T @ Cr
+        return block["gram"]
 
     @staticmethod
     def _solve(Cr, Fr, yr, sw, still, lower, upper, plays_gram=None):
