@@ -456,6 +456,39 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     return out
 
 
+#: pooled autocorrelation of the holds' scatter below which it is an oscillation
+#: (a limit cycle swings to about -1 at half its period; sensor noise, white or
+#: low-pass filtered, stays near or above 0)
+OSCILLATING = -0.5
+
+
+def hold_oscillation(parts):
+    """The most negative autocorrelation of the output's scatter during holds,
+    pooled over the holds (each segment's own products, over lags from 1 to
+    half the shortest segment, at most 200 samples): ``(lag, value)``.  An
+    oscillation sustained while the input is held (a relay servo hunting, a
+    vibration) gives about -1 at half its period; white or low-pass filtered
+    sensor noise stays near or above 0.
+
+    Examples
+    --------
+    >>> t = np.arange(400)
+    >>> hold_oscillation([np.sin(2 * np.pi * t / 20)])[0]
+    10
+    >>> hold_oscillation([np.random.default_rng(0).standard_normal(400)])[1] > -0.2
+    True
+    """
+    L = min(200, min(p.size for p in parts) // 2)
+    if L < 1:
+        return 0, 0.0
+    zero = sum(float(p @ p) for p in parts)
+    if zero <= 0.0:
+        return 0, 0.0
+    acf = np.array([sum(float(p[m:] @ p[:-m]) for p in parts) for m in range(1, L + 1)]) / zero
+    k = int(np.argmin(acf))
+    return k + 1, float(acf[k])
+
+
 def noise_floor(rec, residual):
     """The record's noise floor [output units] and how it was measured.
 
@@ -465,7 +498,10 @@ def noise_floor(rec, residual):
     and, when the input holds still, the scatter of the output within each
     hold's second half about a quadratic trend (which takes out creep's
     slow relaxation); the larger of the two (coloured sensor noise is
-    underestimated by the second difference alone). ``info`` also carries the
+    underestimated by the second difference alone), unless the holds' scatter
+    oscillates (:func:`hold_oscillation`; ``info["holds_oscillate"]``): an
+    output that swings while its input is held is structure the model
+    misses, not noise. ``info`` also carries the
     floor's relative standard error (``relative_standard_error``): an
     "explained" verdict asks for the held-out RMS to be within 1.5 floors by
     that margin.
@@ -483,7 +519,7 @@ def noise_floor(rec, residual):
     """
     hf = _hf_noise(residual)
     info = {"high_frequency": hf}
-    sd, dof = [], 0
+    sd, dof, parts = [], 0, []
     for k, j, _ in rec.holds:
         a = (k + j) // 2
         if j - a < 8:
@@ -494,9 +530,16 @@ def noise_floor(rec, residual):
         r = seg - np.polyval(c, tt)
         sd.append(float(np.sqrt(np.sum(r ** 2) / max(seg.size - 3, 1))))
         dof += max(seg.size - 3, 1)
+        parts.append(r)
     if sd:
         info["holds"] = float(np.median(sd))
         info["n_holds"] = len(sd)
+        lag, acf = hold_oscillation(parts)
+        if acf < OSCILLATING:
+            # the output swings to and fro while the input is held (a limit cycle, a
+            # vibration): structure, not sensor noise, so the holds do not set the floor
+            info["holds_oscillate"] = {"lag_samples": lag, "autocorrelation": round(acf, 4),
+                                       "scatter": info.pop("holds")}
     sigma = max(hf, info.get("holds", 0.0))
     # never zero (a noise-free record): a floor at 1e-6 of the output span
     sigma = max(sigma, 1e-6 * rec.y_span)

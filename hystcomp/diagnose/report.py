@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 11
+SCHEMA_VERSION = 12
 
 
 def _jsonable(x):

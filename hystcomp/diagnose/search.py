@@ -424,6 +424,12 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             remaining["correlated_residual"] = (
                 head + f": structure the model misses (the output's scatter during the holds, "
                 f"{noise_info['holds']:.3g}, confirms the noise floor {sigma:.3g})")
+        elif "holds_oscillate" in noise_info:
+            osc = noise_info["holds_oscillate"]
+            remaining["correlated_residual"] = (
+                head + f": structure the model misses (the output oscillates while the input is held: its "
+                f"scatter during the holds, {osc['scatter']:.3g}, has autocorrelation "
+                f"{osc['autocorrelation']:.2f} at {osc['lag_samples']} samples, so it is not noise)")
         else:
             remaining["correlated_residual"] = (
                 head + ", so the noise floor from its high-frequency part is not reliable (coloured noise or "
