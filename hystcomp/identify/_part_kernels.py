@@ -55,6 +55,32 @@ def _clamp(w, lo, hi):
     return w
 
 
+@njit(cache=True, inline="always")
+def _poly_band(xk, ri, shift, rho, ql, qr, positive):
+    """The band ``(lo, hi)`` of a play with polynomial envelopes (threshold
+    `ri`; `positive`: a play with ``r_i > 0``, which sees ``x - shift``)."""
+    xi = xk - shift if positive else xk
+    s = xi - ri
+    lo = rho * (s + ql * s * s)
+    s = xi + ri
+    return lo, s + qr * s * s
+
+
+@njit(cache=True, inline="always")
+def _relax(w, c, decay, overstress_scale):
+    """A viscous play's output `w` relaxed towards its clamped value `c` over
+    one sample (see the module docstring: Perzyna's linear law, or Eyring's
+    with ``overstress_scale > 0``)."""
+    e = w - c
+    if overstress_scale > 0.0:
+        if e != 0.0:
+            z = math.expm1(-abs(e) / overstress_scale)
+            a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
+            c = c + math.copysign(a * overstress_scale, e)
+        return c
+    return c + e * decay
+
+
 @njit(cache=True)
 def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0,
                  overstress_scale=0.0):
@@ -92,16 +118,9 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             xk = x[k]
             grow = max(1.0 + level * xk, 0.05)
             for i in range(N):
-                if r[i] > 0.0:
-                    ri = r[i] * grow
-                    xi = xk - shift
-                else:
-                    ri = 0.0
-                    xi = xk
-                s = xi - ri
-                lo = rho * (s + ql * s * s)
-                s = xi + ri
-                wi = _clamp(w[i], lo, s + qr * s * s)
+                pos = r[i] > 0.0
+                lo, hi = _poly_band(xk, r[i] * grow if pos else 0.0, shift, rho, ql, qr, pos)
+                wi = _clamp(w[i], lo, hi)
                 w[i] = wi
                 out[k, i] = wi
         return
@@ -113,25 +132,11 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             xk = x[k]
             grow = max(1.0 + level * xk, 0.05)
             for i in range(N):
-                if r[i] > 0.0:
-                    ri = r[i] * grow
-                    xi = xk - shift
-                else:
-                    ri = 0.0
-                    xi = xk
-                s = xi - ri
-                lo = rho * (s + ql * s * s)
-                s = xi + ri
-                wi = _clamp(w[i], lo, s + qr * s * s)
-                if r[i] > 0.0:
-                    e = w[i] - wi
-                    if overstress_scale > 0.0:
-                        if e != 0.0:
-                            z = math.expm1(-abs(e) / overstress_scale)
-                            a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
-                            wi = wi + math.copysign(a * overstress_scale, e)
-                    else:
-                        wi = wi + e * decay
+                pos = r[i] > 0.0
+                lo, hi = _poly_band(xk, r[i] * grow if pos else 0.0, shift, rho, ql, qr, pos)
+                wi = _clamp(w[i], lo, hi)
+                if pos:
+                    wi = _relax(w[i], wi, decay, overstress_scale)
                 w[i] = wi
                 out[k, i] = wi
         return
@@ -148,14 +153,7 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             hi = _env(xi + ri, qr, br)
             wi = _clamp(w[i], lo, hi)
             if decay > 0.0 and r[i] > 0.0:
-                if overstress_scale > 0.0:
-                    e = w[i] - wi
-                    if e != 0.0:
-                        z = math.expm1(-abs(e) / overstress_scale)
-                        a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
-                        wi = wi + math.copysign(a * overstress_scale, e)
-                else:
-                    wi = wi + (w[i] - wi) * decay
+                wi = _relax(w[i], wi, decay, overstress_scale)
             w[i] = wi
             out[k, i] = wi
 
