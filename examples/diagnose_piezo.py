@@ -5,8 +5,10 @@ The whole record of :func:`hystcomp.data.load_piezo` (Chandra et al. 2023)
 goes in: 3.26 s at 0 V, the voltage step, then the 1 Hz, +-150 V sine; the
 last 30 % (t = 7 .. 10 s) is held out.  The base PI model leaves a level
 shift: the actuator did not start from the virgin state.  The diagnosis
-names ``initial_state`` (a preload history before the record), not
-asymmetry, and says what remains (docs/diagnose.md).
+names ``initial_state`` (a preload history before the record) for it, not
+asymmetry.  At 5 kHz it stops there and says what remains; at 1 kHz (the
+default here) an asymmetry follows for the small even rest against the
+input (docs/diagnose.md, "Measured: the piezo record").
 
     python examples/diagnose_piezo.py --out figs           # every 5th sample (1 kHz), seconds
     python examples/diagnose_piezo.py --out figs --full    # all 50,001 samples at 5 kHz

@@ -181,9 +181,17 @@ def test_piezo_record_initial_state_not_asymmetry():
     assert rep.effects[:1] == ["initial_state"] or (rep.verdict == "unexplained" and rep.remaining)
     assert rep.effects[0] == "initial_state"
     assert rep.rms_after < 0.2 * rep.rms_before
-    # unexplained (1.75 noise floors) with no drift named, so re-judged on blocks
-    # spread over the record; that names no drift either and is not taken
-    assert rep.other_split["held_out"] == "blocks" and "not taken" in rep.other_split["why"]
+    if rep.verdict == "unexplained":
+        # until round 17: the initial state alone, unexplained (1.75 noise floors) with no drift
+        # named, so re-judged on blocks spread over the record, which names no drift either
+        # and is not taken
+        assert rep.other_split["held_out"] == "blocks" and "not taken" in rep.other_split["why"]
+    else:
+        # since round 18 at 1 kHz: the ringing preload at step 1 (0.0795 um), asymmetry at step 2,
+        # the two-point preload back in the revision (0.0680 um, 1.41 noise floors), explained
+        # within its bound; the level shift is the initial state's
+        assert rep.effects == ["initial_state", "asymmetry"]
+        assert rep.rms_heldout <= rep.explained_limit * rep.noise_floor
 
 
 def _bh(material):
