@@ -383,8 +383,9 @@ class RingingPreload(InitialState):
     most of a record, and a slow drift drew it better (HOLDOUT15's servo
     memory, round 17).  ``u1`` and ``u2`` are searched as the two-point
     preload's, without its wider reach; the decay from 0.05 to 0.9; the centre
-    is the first input of the record the part is prepared on
-    (:meth:`prepare`; a part not prepared takes its context's first input).
+    and the span the alternation settles in are those of the record the part
+    is prepared on (:meth:`prepare`; a part not prepared takes its
+    context's).
 
     Examples
     --------
@@ -413,16 +414,20 @@ class RingingPreload(InitialState):
         return [{"u1": u1, "u2": hi if u1 == lo else lo, "ringing": q} for u1 in (lo, hi) for q in (0.3, 0.6)]
 
     def prepare(self, y, ctx):
-        # the alternation's centre is the fitted record's first input, kept for any input
-        # the model is run on later (the preload is the record's history, not the new input's)
-        self.centre = float(ctx.x[0])
+        # the alternation's centre and where it has settled come from the fitted record,
+        # kept for any input the model is run on later (the preload is the record's
+        # history, not the new input's), and not recomputed at every solve
+        self._anchor = self._anchor_of(ctx)
+
+    def _anchor_of(self, ctx):
+        """``(centre, settled)``: the record's first input and SETTLED of its span."""
+        return float(ctx.x[0]), self.SETTLED * max(float(np.ptp(ctx.x)), 1e-12)
 
     def core_options(self, values, ctx, options):
-        x0 = getattr(self, "centre", None)
-        x0 = float(ctx.x[0]) if x0 is None else x0
+        anchor = getattr(self, "_anchor", None)
+        x0, settled = self._anchor_of(ctx) if anchor is None else anchor
         pre = [values["u1"], values["u2"]]
         a, q = values["u2"] - x0, values["ringing"]
-        settled = self.SETTLED * max(float(np.ptp(ctx.x)), 1e-12)
         while abs(a) * q > settled:
             a *= -q
             pre.append(x0 + a)
