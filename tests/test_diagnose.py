@@ -78,13 +78,16 @@ def test_report_json_and_model_reproduces_heldout_rms():
     base = rep.base_model.simulate(d.v)
     assert np.sqrt(np.mean((d.y[k:] - base[k:]) ** 2)) == pytest.approx(rep.rms_before, rel=1e-9)
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 12
+    assert js["schema_version"] == 13
     for key in ("verdict", "noise_floor", "effects", "steps", "untested", "stopped", "remaining",
                 "rms_before_pct", "rms_after_pct", "held_out_blocks", "other_split"):
         assert key in js
     s = js["steps"][0]
     assert list(s)[:5] == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct"]
     assert s["rms_after_pct"] == pytest.approx(100 * s["rms_after"] / np.ptp(d.y))
+    # every RMS also in % of the output span, the held-out one too (schema 13)
+    assert js["rms_heldout_pct"] == pytest.approx(100 * rep.rms_heldout / np.ptp(d.y), rel=1e-12)
+    assert js["noise_floor_pct"] == pytest.approx(100 * rep.noise_floor / np.ptp(d.y), rel=1e-12)
     assert js["rest"] == {"origin": 0.0, "other": None}       # the record reaches 0 V
     # the signature gates the fit: at the first step the parts fitted are those
     # whose effect's signature is present in the base residual, the others are

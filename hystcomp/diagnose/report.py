@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 12
+SCHEMA_VERSION = 13
 
 
 def _jsonable(x):
@@ -259,7 +259,8 @@ class Diagnosis:
             "ambiguous": dict(self.ambiguous),
             "misfit_share_explained": self.misfit_share_explained, "rms_before": self.rms_before, "rms_after": self.rms_after,
             "rms_before_pct": self._pct(self.rms_before), "rms_after_pct": self._pct(self.rms_after),
-            "rms_heldout": self.rms_heldout, "output_span": self.output_span,
+            "rms_heldout": self.rms_heldout, "rms_heldout_pct": self._pct(self.rms_heldout),
+            "output_span": self.output_span,
             "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
             "other_split": self.other_split, "rest": self.rest,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
