@@ -101,3 +101,42 @@ def test_plays_gram_memo_gives_the_fit_computed_afresh():
     # the stacked design's product equals the blockwise one up to rounding
     A = s.design({"offset_drift": other}, ctx)[0]
     np.testing.assert_allclose(A @ reused.theta, reused.prediction, rtol=0, atol=1e-12 * np.abs(y).max())
+
+
+def test_additive_columns_memo_gives_the_fit_computed_afresh():
+    """The additive parts' columns (a drift's, an offset's) are built and
+    stacked once per part instance and values, read-only, and kept for the
+    last ADDITIVE_CACHE sets; the inner solve keeps their fitted rows and
+    Gram matrix per row set. A fit through both memos equals, to the last
+    bit, the same fit by an engine and a context that form everything anew;
+    other values or another instance of the part get their own entry."""
+    from hystcomp.identify.parts import Drift, OutputLag
+    from hystcomp.identify.search import VariableProjection
+
+    ctx = _ctx()
+    y = np.tanh(ctx.x) + 0.01 * np.arange(ctx.x.size) / ctx.x.size
+    train = np.arange(ctx.x.size) < 2100
+    drift = Drift()
+    s = Structure().extended(drift).extended(OutputLag())
+    vp = VariableProjection(ctx, y, train)
+    pts = [vp.evaluate(s, {"offset_drift": {"time_constant": 0.5}, "output_lag": {"time_constant": tau}})
+           for tau in (0.01, 0.02, 0.01)]
+    # the lag's time constant changes, the drift's columns are those of one entry
+    assert len(ctx.additive_cache) == 1 and len(vp._additive_cache) == 1
+    F = next(iter(ctx.additive_cache.values()))[1][0]
+    with pytest.raises(ValueError):
+        F[0, 0] = 1.0
+    for tau, pt in zip((0.01, 0.02, 0.01), pts):
+        ctx2 = _ctx()
+        fresh = VariableProjection(ctx2, y, train).evaluate(
+            s, {"offset_drift": {"time_constant": 0.5}, "output_lag": {"time_constant": tau}})
+        np.testing.assert_array_equal(pt.theta, fresh.theta)
+        np.testing.assert_array_equal(pt.prediction, fresh.prediction)
+    # another drift time constant, or another instance of the part: new entries, bounded
+    vp.evaluate(s, {"offset_drift": {"time_constant": 1.5}, "output_lag": {"time_constant": 0.01}})
+    s2 = Structure().extended(Drift())
+    vp.evaluate(s2, {"offset_drift": {"time_constant": 0.5}})
+    assert len(ctx.additive_cache) == 3
+    for tc in np.linspace(0.2, 2.0, search.ADDITIVE_CACHE + 3):
+        s2.design({"offset_drift": {"time_constant": float(tc)}}, ctx)
+    assert len(ctx.additive_cache) == search.ADDITIVE_CACHE

@@ -121,17 +121,9 @@ class Structure:
             if p.slot == "filter":
                 C = p.filter(C, values.get(p.kind, {}), ctx)
         k = C.shape[1]
-        blocks, lower, upper = [], [np.zeros(k)], [np.full(k, np.inf)]
-        names = ["p0"] + [f"p{i}" for i in range(1, k)]
-        for p in self.parts:
-            if p.slot == "additive":
-                cols, lo, hi, nm = p.columns(values.get(p.kind, {}), ctx)
-                blocks.append(cols)
-                lower.append(lo)
-                upper.append(hi)
-                names += list(nm)
-        F = np.column_stack(blocks) if blocks else np.zeros((C.shape[0], 0))
-        return C, F, np.concatenate(lower), np.concatenate(upper), names
+        F, lo, hi, nm = _additive_columns([p for p in self.parts if p.slot == "additive"], values, ctx)
+        names = ["p0"] + [f"p{i}" for i in range(1, k)] + nm
+        return C, F, np.concatenate([np.zeros(k), lo]), np.concatenate([np.full(k, np.inf), hi]), names
 
     def after_output(self, values, ctx):
         """Sum of the ``after_output`` parts' terms (0.0 without any)."""
@@ -179,6 +171,56 @@ def _core_columns(core, x, options, ctx):
     while len(cache) > CORE_CACHE:
         cache.popitem(last=False)
     return C
+
+
+ADDITIVE_CACHE = 8
+"""Additive blocks kept per record (:func:`_additive_columns`)."""
+
+
+def _frozen(values):
+    """A hashable copy of one part's ``{parameter: value}``."""
+    return tuple(sorted((k, np.asarray(v, dtype=np.float64).tobytes()) for k, v in values.items()))
+
+
+def _additive_columns(parts, values, ctx):
+    """The additive `parts`' columns side by side, their bounds and names,
+    memoised on the record's context.
+
+    A search varies one part's parameters at a time: the drift's or the
+    offset's columns are the same for every value of a filter's or a
+    play's parameters, and are built and stacked once.  The last
+    :data:`ADDITIVE_CACHE` blocks are kept, keyed by the parts (the same
+    instances: a part attached to a model draws on that model) and their
+    values.  The block returned is read-only.
+
+    Returns
+    -------
+    F : ndarray, shape (n, m)
+    lower, upper : ndarray, shape (m,)
+    names : list of str
+    """
+    cache = getattr(ctx, "additive_cache", None)
+    if cache is None:
+        cache = ctx.additive_cache = OrderedDict()
+    key = tuple((id(p), p.kind, _frozen(values.get(p.kind, {}))) for p in parts)
+    hit = cache.get(key)
+    if hit is not None and len(hit[0]) == len(parts) and all(a is b for a, b in zip(hit[0], parts)):
+        cache.move_to_end(key)
+        return hit[1]
+    blocks, lower, upper, names = [], [], [], []
+    for p in parts:
+        cols, lo, hi, nm = p.columns(values.get(p.kind, {}), ctx)
+        blocks.append(cols)
+        lower.append(lo)
+        upper.append(hi)
+        names += list(nm)
+    F = np.column_stack(blocks) if blocks else np.zeros((ctx.n, 0))
+    F.setflags(write=False)
+    out = (F, np.concatenate(lower) if lower else np.zeros(0), np.concatenate(upper) if upper else np.zeros(0), names)
+    cache[key] = (tuple(parts), out)
+    while len(cache) > ADDITIVE_CACHE:
+        cache.popitem(last=False)
+    return out
 
 
 class FitPoint:
@@ -240,6 +282,7 @@ class VariableProjection:
         self.train = np.asarray(train, bool)
         self.n_evaluations = 0
         self._gram_cache = OrderedDict()
+        self._additive_cache = OrderedDict()
 
     def evaluate(self, structure, values):
         """The inner (linear) solution for given nonlinear values.
@@ -280,8 +323,10 @@ class VariableProjection:
         if moves is not None:
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
-        theta = self._solve(Cr, _rows(F, rows), _rows(target, rows), sw, still, lower, upper,
-                            self._plays_gram(block) if sw is None else None)
+        fblock = self._plays_block(F, rows, 0, self._additive_cache)
+        theta = self._solve(Cr, fblock["rows"], _rows(target, rows), sw, still, lower, upper,
+                            self._plays_gram(block) if sw is None else None,
+                            self._plays_gram(fblock) if sw is None else None)
         u = C @ theta[:k_c] + F @ theta[k_c:]
         ov = values.get(out.kind, {}) if out is not None else {}
         pred = u if out is None else out.output(u, ov, ctx)
@@ -309,7 +354,7 @@ class VariableProjection:
         k = int(np.sum(theta != 0)) + len(structure.parameters(ctx))
         return FitPoint(values, theta, pred, float(e @ e), int(self.train.sum()), k, names)
 
-    def _plays_block(self, C, rows, k_core):
+    def _plays_block(self, C, rows, k_core, cache=None):
         """The play block `C` on the fitted `rows`: ``{"rows": C[rows],
         "moves": the ranges of its first k_core columns (None for fewer than
         two plays or no rows), "gram": its Gram matrix, formed when first
@@ -318,7 +363,9 @@ class VariableProjection:
         candidates after the core (additive columns, the output map) solve
         with the same plays many times, and the rows' copy (blocks held out
         inside the record), their ranges and Gram matrix are the same each
-        time.  A block a filter made (writeable) is never kept."""
+        time.  A block a filter made (writeable) is never kept.  The additive
+        parts' block (memoised by :func:`_additive_columns`) is kept the same
+        way, in its own `cache`."""
         def fresh():
             Cr = _rows(C, rows)
             moves = column_ranges(Cr, k_core) if k_core > 1 and Cr.shape[0] else None
@@ -329,14 +376,15 @@ class VariableProjection:
         k = int(np.count_nonzero(rows))
         rk = (k,) if k == rows.size or rows[:k].all() else hashlib.blake2b(rows.tobytes(), digest_size=16).digest()
         key = (id(C), rk, k_core)
-        hit = self._gram_cache.get(key)
+        cache = self._gram_cache if cache is None else cache
+        hit = cache.get(key)
         if hit is not None and hit[0] is C:
-            self._gram_cache.move_to_end(key)
+            cache.move_to_end(key)
             return hit[1]
         block = fresh()
-        self._gram_cache[key] = (C, block)
-        while len(self._gram_cache) > CORE_CACHE:
-            self._gram_cache.popitem(last=False)
+        cache[key] = (C, block)
+        while len(cache) > CORE_CACHE:
+            cache.popitem(last=False)
         return block
 
     @staticmethod
@@ -349,11 +397,11 @@ class VariableProjection:
         return block["gram"]
 
     @staticmethod
-    def _solve(Cr, Fr, yr, sw, still, lower, upper, plays_gram=None):
+    def _solve(Cr, Fr, yr, sw, still, lower, upper, plays_gram=None, additive_gram=None):
         """Weights of the rows ``[Cr, Fr]``, `yr` (row weights `sw`, columns
         `still` held at 0) by the one constrained least-squares solver; the
         Gram matrix is formed by blocks (``plays_gram``: ``Cr^T Cr`` when
-        known)."""
+        known; ``additive_gram``: ``Fr^T Fr`` when known)."""
         if sw is not None:
             Cr, Fr, yr = Cr * sw[:, None], Fr * sw[:, None], yr * sw
         n_r = max(Cr.shape[0], 1)
@@ -363,7 +411,7 @@ class VariableProjection:
         G[:kc, :kc] = Cr.T @ Cr if plays_gram is None else plays_gram
         G[:kc, kc:] = Cr.T @ Fr
         G[kc:, :kc] = G[:kc, kc:].T
-        G[kc:, kc:] = Fr.T @ Fr
+        G[kc:, kc:] = Fr.T @ Fr if additive_gram is None else additive_gram
         b = np.concatenate([Cr.T @ yr, Fr.T @ yr])
         if still.any():
             # the columns held at 0 leave the problem (as zero columns would)
