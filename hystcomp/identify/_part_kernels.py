@@ -66,6 +66,28 @@ def _poly_band(xk, ri, shift, rho, ql, qr, positive):
     return lo, s + qr * s * s
 
 
+def activated_overstress(overstress, decay, overstress_scale):
+    """The overstress ``|w - c|`` of a thermally activated play after one
+    sample with the input held (Eyring's law, see the module docstring):
+    ``s log1p(-2 D z / (2 + z (1 + D)))``, ``z = expm1(-|w - c| / s)``.
+    Scalars or arrays: the compiled kernel and the exact inverse
+    (:mod:`hystcomp.identify.parts_inverse`) both step with it.
+
+    Examples
+    --------
+    Well below the scale ``s`` the overstress falls by ``decay`` (Perzyna's
+    law); ten times above it, to about ``s``:
+
+    >>> activated_overstress(np.array([0.01, 1.0]), 0.5, 0.1).round(5).tolist()
+    [0.005, 0.10985]
+    """
+    z = np.expm1(-overstress / overstress_scale)
+    return overstress_scale * np.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
+
+
+_activated_overstress = njit(cache=True, inline="always")(activated_overstress)
+
+
 @njit(cache=True, inline="always")
 def _relax(w, c, decay, overstress_scale):
     """A viscous play's output `w` relaxed towards its clamped value `c` over
@@ -74,9 +96,7 @@ def _relax(w, c, decay, overstress_scale):
     e = w - c
     if overstress_scale > 0.0:
         if e != 0.0:
-            z = math.expm1(-abs(e) / overstress_scale)
-            a = math.log1p(-2.0 * decay * z / (2.0 + z * (1.0 + decay)))
-            c = c + math.copysign(a * overstress_scale, e)
+            c = c + math.copysign(_activated_overstress(abs(e), decay, overstress_scale), e)
         return c
     return c + e * decay
 

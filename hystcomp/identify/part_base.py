@@ -82,6 +82,8 @@ class Context:
         self.held_out = _blocks(held_out)
         #: memo of the core's play columns (see :class:`~hystcomp.identify.search.VariableProjection`)
         self.core_cache = OrderedDict()
+        #: memo of the additive parts' columns (see :func:`~hystcomp.identify.search._additive_columns`)
+        self.additive_cache = OrderedDict()
 
     @property
     def fitted_until(self):

@@ -30,6 +30,7 @@ import math
 
 import numpy as np
 
+from ._part_kernels import activated_overstress
 from .parts_dynamics import _OutputBend
 
 __all__ = ["PartsInverse", "NOT_CAUSAL"]
@@ -178,10 +179,8 @@ class _Stepper:
             # viscous plays relax towards the band (the preload, at rest, is fully relaxed)
             if self.overstress_scale > 0.0:
                 # Eyring's sinh law (see identify._part_kernels): tanh(|w - c| / 2s) falls by decay
-                s_ = self.overstress_scale
                 e = wb - c
-                z = np.expm1(-np.abs(e) / s_)
-                a = s_ * np.log1p(-2.0 * self.decay * z / (2.0 + z * (1.0 + self.decay)))
+                a = activated_overstress(np.abs(e), self.decay, self.overstress_scale)
                 c = np.where(pos, c + np.copysign(a, e), c)
             else:
                 c = np.where(pos, c + (wb - c) * self.decay, c)

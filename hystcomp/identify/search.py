@@ -199,12 +199,10 @@ def _additive_columns(parts, values, ctx):
     lower, upper : ndarray, shape (m,)
     names : list of str
     """
-    cache = getattr(ctx, "additive_cache", None)
-    if cache is None:
-        cache = ctx.additive_cache = OrderedDict()
+    cache = ctx.additive_cache
     key = tuple((id(p), p.kind, _frozen(values.get(p.kind, {}))) for p in parts)
     hit = cache.get(key)
-    if hit is not None and len(hit[0]) == len(parts) and all(a is b for a, b in zip(hit[0], parts)):
+    if hit is not None and all(a is b for a, b in zip(hit[0], parts)):
         cache.move_to_end(key)
         return hit[1]
     blocks, lower, upper, names = [], [], [], []
@@ -318,15 +316,15 @@ class VariableProjection:
         # goes further (the held-out part, another record)
         k_core = sum(1 for nm in names if nm.startswith("p") and nm[1:].isdigit())
         still = np.zeros(len(names), bool)
-        block = self._plays_block(C, rows, k_core)
+        block = self._fitted_block(C, rows, k_core)
         Cr, moves = block["rows"], block["moves"]
         if moves is not None:
             still[:k_core] = moves < STILL * moves.max()
         sw = None if weights is None else np.sqrt(weights[rows])
-        fblock = self._plays_block(F, rows, 0, self._additive_cache)
+        fblock = self._fitted_block(F, rows, 0, self._additive_cache)
         theta = self._solve(Cr, fblock["rows"], _rows(target, rows), sw, still, lower, upper,
-                            self._plays_gram(block) if sw is None else None,
-                            self._plays_gram(fblock) if sw is None else None)
+                            self._block_gram(block) if sw is None else None,
+                            self._block_gram(fblock) if sw is None else None)
         u = C @ theta[:k_c] + F @ theta[k_c:]
         ov = values.get(out.kind, {}) if out is not None else {}
         pred = u if out is None else out.output(u, ov, ctx)
@@ -354,11 +352,11 @@ class VariableProjection:
         k = int(np.sum(theta != 0)) + len(structure.parameters(ctx))
         return FitPoint(values, theta, pred, float(e @ e), int(self.train.sum()), k, names)
 
-    def _plays_block(self, C, rows, k_core, cache=None):
-        """The play block `C` on the fitted `rows`: ``{"rows": C[rows],
+    def _fitted_block(self, C, rows, k_core, cache=None):
+        """A column block `C` (the plays, or the additive parts' columns) on the fitted `rows`: ``{"rows": C[rows],
         "moves": the ranges of its first k_core columns (None for fewer than
         two plays or no rows), "gram": its Gram matrix, formed when first
-        asked for (:meth:`_plays_gram`)}``.  For a memoised block (read-only)
+        asked for (:meth:`_block_gram`)}``.  For a memoised block (read-only)
         it is kept for the last :data:`CORE_CACHE` blocks and row sets: the
         candidates after the core (additive columns, the output map) solve
         with the same plays many times, and the rows' copy (blocks held out
@@ -388,9 +386,9 @@ class VariableProjection:
         return block
 
     @staticmethod
-    def _plays_gram(block):
-        """``Cr^T Cr`` of a play block from :meth:`_plays_block` (formed once
-        and kept in it)."""
+    def _block_gram(block):
+        """``Cr^T Cr`` of a block from :meth:`_fitted_block` (formed once and
+        kept in it)."""
         if block["gram"] is None:
             Cr = block["rows"]
             block["gram"] = Cr.T @ Cr
