@@ -56,3 +56,26 @@ def test_partial_rms_without_nuisance_columns():
     e, N, F = _columns(4)
     empty = np.zeros((e.size, 0))
     assert _partial(e, empty, F) == pytest.approx(_by_svd(e, empty, F), rel=1e-9)
+
+
+def test_record_memo_gives_the_evidence_computed_afresh():
+    """The columns that depend on the record alone (and their Gram matrices) are built once per record
+    (``Record.signature_memo``); every later residual's evidence is bit-equal to the one a fresh record computes."""
+    from hystcomp.datasets import hidden_effect_data
+    from hystcomp.diagnose.record import Record
+    from hystcomp.diagnose.signatures import evidence
+
+    d = hidden_effect_data("creep", seed=1, dt=0.01, duration=60.0)
+    rng = np.random.default_rng(5)
+    rec = Record(d.t, d.v, d.y, 0.3)
+    assert rec.signature_memo == {}
+    residuals = [rng.standard_normal(rec.n) * 0.01 + 0.02 * np.sin(k + rec.v / 20.0) for k in range(3)]
+    pred = rec.y - residuals[0]
+    kept = [evidence(rec, e, pred, 0.01) for e in residuals]
+    # the memo holds the nuisance and the record-only blocks (rate, drift, asymmetry, saturation, start)
+    assert {"nuisance", ("rate",), ("drift", "common"), ("drift", "by_level"), ("asymmetry",), ("saturation",),
+            ("initial_state",)} <= set(rec.signature_memo)
+    for e, ev in zip(residuals, kept):
+        assert ev == evidence(Record(d.t, d.v, d.y, 0.3), e, pred, 0.01)
+    # residuals that differ give statistics that differ (the memo holds no residual)
+    assert kept[0]["asymmetry"]["statistic"] != kept[1]["asymmetry"]["statistic"]

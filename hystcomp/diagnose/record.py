@@ -281,6 +281,9 @@ class Record:
             self.holds = []
             self.f_peak, self.peak_share = 0.0, 1.0
         self.direction = np.sign(self.rate)
+        #: the signature tests' columns that depend on the record alone, with their Gram
+        #: matrices, built at their first use (:mod:`hystcomp.diagnose.signatures`)
+        self.signature_memo = {}
 
     def set_origin(self, origin):
         """Start the plays at rest at `origin` (input units): the core works

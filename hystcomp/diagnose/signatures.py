@@ -65,14 +65,8 @@ def _rss_gram(G, b, ee, rcond=1e-13):
     return max(ee - float(z @ (z / lam[keep])), 0.0)
 
 
-def _partial(e, N, F):
-    """RMS of what the columns F explain of e beyond the columns N.
-
-    One Gram matrix of ``[N, F]`` (by blocks, without stacking the
-    columns) serves both fits: 40,000 rows cost a few ms, where an SVD per
-    fit (``numpy.linalg.lstsq``) cost 12 ms each."""
-    n = e.size
-    F = F.reshape(n, -1)
+def _gram(N, F):
+    """The Gram matrix of ``[N, F]``, by blocks (without stacking the columns)."""
     k = N.shape[1]
     m = k + F.shape[1]
     G = np.empty((m, m))
@@ -80,16 +74,55 @@ def _partial(e, N, F):
     G[:k, k:] = N.T @ F
     G[k:, :k] = G[:k, k:].T
     G[k:, k:] = F.T @ F
+    return G
+
+
+def _partial(e, N, F, G=None):
+    """RMS of what the columns F explain of e beyond the columns N.
+
+    One Gram matrix of ``[N, F]`` (`G` when known: :func:`_fixed`) serves
+    both fits: 40,000 rows cost a few ms, where an SVD per fit
+    (``numpy.linalg.lstsq``) cost 12 ms each."""
+    n = e.size
+    F = F.reshape(n, -1)
+    k = N.shape[1]
+    G = _gram(N, F) if G is None else G
     b = np.concatenate([N.T @ e, F.T @ e])
     ee = float(e @ e)
     return math.sqrt(max(_rss_gram(G[:k, :k], b[:k], ee) - _rss_gram(G, b, ee), 0.0) / n)
 
 
-def _level_split(e, N, F, by_level):
+def _fixed(rec, key, build):
+    """Columns ``(N, F)`` that depend on the record alone, with their Gram
+    matrix: built by ``build()`` at the first call for `key` and kept in
+    ``rec.signature_memo`` (every step's evidence tests new residuals
+    against the same columns; the same floats as building them afresh)."""
+    hit = rec.signature_memo.get(key)
+    if hit is None:
+        N, F = build()
+        F = F.reshape(N.shape[0], -1)
+        hit = rec.signature_memo[key] = (N, F, _gram(N, F))
+    return hit
+
+
+def _partial_fixed(e, rec, key, build):
+    """:func:`_partial` of the record's columns ``build() -> (N, F)`` (kept: :func:`_fixed`)."""
+    N, F, G = _fixed(rec, key, build)
+    return _partial(e, N, F, G)
+
+
+def _level_split(e, N, F, by_level, rec=None, key=None):
     """Partial RMS of the trend columns F beyond N (common to every input
-    level), and of the level-dependent columns `by_level` beyond N and F."""
-    NF = np.column_stack([N, F])
-    return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
+    level), and of the level-dependent columns `by_level` beyond N and F
+    (with `rec` and `key`: columns of the record alone, kept, :func:`_fixed`;
+    then `F` and `by_level` are callables that build them)."""
+    if rec is None:
+        NF = np.column_stack([N, F])
+        return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
+    common = _partial_fixed(e, rec, key + ("common",), lambda: (N, F()))
+    Nc, Fc, _ = _fixed(rec, key + ("common",), None)
+    return common, _partial_fixed(e, rec, key + ("by_level",),
+                                  lambda: (np.column_stack([Nc, Fc]), np.column_stack(by_level())))
 
 
 def _level_verdict(common, by_level, sigma, what, how, effect):
@@ -168,7 +201,9 @@ def evidence(rec, e, pred, sigma, only=None):
     ev = {}
     n = rec.n
     one = np.ones((n, 1))
-    N = _static_nuisance(rec)
+    N = rec.signature_memo.get("nuisance")
+    if N is None:
+        N = rec.signature_memo["nuisance"] = _static_nuisance(rec)
     timed = rec.dt is not None
     c = 0.5 * (rec.vmin + rec.vmax)
     xc = (rec.v - c) / (0.5 * rec.span)
@@ -191,9 +226,11 @@ def evidence(rec, e, pred, sigma, only=None):
                 f"{rec.f_peak:.3g} Hz; at one rate of excitation rate dependence cannot be told from the loop's "
                 "shape (add sines at other frequencies)")
         else:
-            r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)
-            F = np.column_stack([r, r * np.abs(r), np.gradient(r)])
-            put("rate_dependence", sig, _partial(e, N, F) / sigma, PARTIAL)
+            def rate_columns():
+                r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)
+                return N, np.column_stack([r, r * np.abs(r), np.gradient(r)])
+
+            put("rate_dependence", sig, _partial_fixed(e, rec, ("rate",), rate_columns) / sigma, PARTIAL)
 
     if only is None or only in ('delay',):
         # -- delay: residual along the derivative of the prediction
@@ -267,8 +304,9 @@ def evidence(rec, e, pred, sigma, only=None):
             # branch and branch x v), as a misfit of the loop does under an
             # excitation whose amplitude changes in time
             d = rec.direction
-            common, by_level = _level_split(e, N, T, [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
-                                                      T * (d * xc)[:, None]])
+            common, by_level = _level_split(
+                e, N, lambda: T, lambda: [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
+                                          T * (d * xc)[:, None]], rec, ("drift",))
             put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
                 common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
@@ -293,9 +331,11 @@ def evidence(rec, e, pred, sigma, only=None):
         # (v, dv/dt) -> (-v, -dv/dt); asymmetry leaves an even part
         put("asymmetry", "residual against functions of the input even under (v, dv/dt) -> (-v, -dv/dt) "
             "(v^2, sign(dv/dt) v^2, |v|, sign(dv/dt) v)",
-            _partial(e, N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc])) / sigma, PARTIAL)
+            _partial_fixed(e, rec, ("asymmetry",), lambda: (
+                N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc]))) / sigma, PARTIAL)
         put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
-            _partial(e, N1, np.column_stack([xc ** 3, xc ** 5])) / sigma, PARTIAL)
+            _partial_fixed(e, rec, ("saturation",), lambda: (N1, np.column_stack([xc ** 3, xc ** 5]))) / sigma,
+            PARTIAL)
 
     if only is None or only in ('output_saturation',):
         # -- output saturation: the output stays flat at an extreme while the input keeps moving
@@ -350,10 +390,13 @@ def evidence(rec, e, pred, sigma, only=None):
             k = int(np.searchsorted(reach, q))
             if 0.2 * n < k <= 0.9 * n and all(abs(k - k0) > 0.05 * n for k0 in ends):
                 ends.append(k)
-        F = np.column_stack([c for k in ends for c in ((k_idx < k).astype(float), (k_idx < k) * xc)])
-        tn = k_idx / (n - 1) - 0.5
-        Nt = np.column_stack([N, tn, tn ** 2])
-        put("initial_state", sig, _partial(e, Nt, F) / sigma, START, first_excursion=k1)
+        def start_columns():
+            tn = k_idx / (n - 1) - 0.5
+            return (np.column_stack([N, tn, tn ** 2]),
+                    np.column_stack([col for k in ends for col in ((k_idx < k).astype(float), (k_idx < k) * xc)]))
+
+        put("initial_state", sig, _partial_fixed(e, rec, ("initial_state",), start_columns) / sigma, START,
+            first_excursion=k1)
     return ev
 
 
