@@ -140,3 +140,28 @@ def test_additive_columns_memo_gives_the_fit_computed_afresh():
     for tc in np.linspace(0.2, 2.0, search.ADDITIVE_CACHE + 3):
         s2.design({"offset_drift": {"time_constant": float(tc)}}, ctx)
     assert len(ctx.additive_cache) == search.ADDITIVE_CACHE
+
+
+def test_optimise_solves_each_point_once_and_keeps_the_best():
+    """The local search asks for the start again (Nelder-Mead's first vertex) and for vertices clipped to the
+    box more than once; each point is solved once, and the point returned is the best of those solved."""
+    ctx = _ctx()
+    rng = np.random.default_rng(3)
+    s = Structure().extended(Delay())
+    k = np.arange(ctx.x.size)
+    truth = 1.5 * np.interp(k - 2.3, k, ctx.x) + 0.2          # the input 2.3 samples late, scaled
+    vp = search.VariableProjection(ctx, truth + 1e-3 * rng.standard_normal(truth.size), np.arange(truth.size) < 2400)
+    solved = []
+    evaluate = vp.evaluate
+
+    def counted(structure, values):
+        solved.append(values["delay"]["delay"])
+        return evaluate(structure, values)
+
+    vp.evaluate = counted
+    # a repeated start and a start at the edge of the bounds (clipped vertices)
+    start = {"delay": {"delay": 0.5}}
+    best = vp.optimise(s, start, starts=[{"delay": {"delay": 0.5}}, {"delay": {"delay": 0.0}}], max_evaluations=40)
+    assert len(solved) == len(set(solved)) and len(solved) >= 5
+    assert best.rss == min(evaluate(s, {"delay": {"delay": d}}).rss for d in solved)
+    assert best.values["delay"]["delay"] == pytest.approx(2.3, abs=0.05)     # noise 1e-3: the delay is found

@@ -472,10 +472,21 @@ class VariableProjection:
                 raise ValueError(f"Parameter {q.name!r} of part {p.kind!r} has bounds ({q.lower}, {q.upper}) and "
                                  f"reach {q.reach} but should have finite ends, a reach that contains the "
                                  "bounds, and positive ends on a logarithmic scale")
+        # the training RSS of the points this search has solved: Nelder-Mead's first
+        # vertex is the best start, and vertices clipped to the box repeat; a point
+        # solved before is not solved again (nor can it become a new best)
+        solved = {}
+
+        def key(vals):
+            return tuple((k, _frozen(v)) for k, v in sorted(vals.items()))
+
         best = None
         for cand in [start] + list(starts or []):
             vals = _merge(start, cand)
+            if key(vals) in solved:
+                continue
             pt = self.evaluate(structure, vals)
+            solved[key(vals)] = pt.rss
             if best is None or pt.rss < best.rss:
                 best = pt
         if not params or max_evaluations <= 0:
@@ -497,7 +508,12 @@ class VariableProjection:
                 return vals
 
             def cost(u):
-                pt = self.evaluate(structure, from_u(u))
+                vals = from_u(u)
+                k = key(vals)
+                if k in solved:
+                    return solved[k]
+                pt = self.evaluate(structure, vals)
+                solved[k] = pt.rss
                 if pt.rss < cache["best"].rss:
                     cache["best"] = pt
                 return pt.rss
