@@ -111,16 +111,19 @@ def _partial_fixed(e, rec, key, build):
     return _partial(e, N, F, G)
 
 
-def _level_split(e, N, F, by_level, rec=None, key=None):
+def _level_split(e, N, F, by_level):
     """Partial RMS of the trend columns F beyond N (common to every input
-    level), and of the level-dependent columns `by_level` beyond N and F
-    (with `rec` and `key`: columns of the record alone, kept, :func:`_fixed`;
-    then `F` and `by_level` are callables that build them)."""
-    if rec is None:
-        NF = np.column_stack([N, F])
-        return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
-    common = _partial_fixed(e, rec, key + ("common",), lambda: (N, F()))
-    Nc, Fc, _ = _fixed(rec, key + ("common",), None)
+    level), and of the level-dependent columns `by_level` beyond N and F."""
+    NF = np.column_stack([N, F])
+    return _partial(e, N, F), _partial(e, NF, np.column_stack(by_level))
+
+
+def _level_split_fixed(e, rec, key, N, trend, by_level):
+    """:func:`_level_split` of columns of the record alone, built by the
+    callables ``trend()`` and ``by_level()`` (a list) at their first use and
+    kept with their Gram matrices (:func:`_fixed`, under `key`)."""
+    common = _partial_fixed(e, rec, key + ("common",), lambda: (N, trend()))
+    Nc, Fc, _ = rec.signature_memo[key + ("common",)]
     return common, _partial_fixed(e, rec, key + ("by_level",),
                                   lambda: (np.column_stack([Nc, Fc]), np.column_stack(by_level())))
 
@@ -304,9 +307,9 @@ def evidence(rec, e, pred, sigma, only=None):
             # branch and branch x v), as a misfit of the loop does under an
             # excitation whose amplitude changes in time
             d = rec.direction
-            common, by_level = _level_split(
-                e, N, lambda: T, lambda: [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
-                                          T * (d * xc)[:, None]], rec, ("drift",))
+            common, by_level = _level_split_fixed(
+                e, rec, ("drift",), N, lambda: T,
+                lambda: [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
             put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
                 common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
