@@ -483,10 +483,11 @@ class VariableProjection:
         best = None
         for cand in [start] + list(starts or []):
             vals = _merge(start, cand)
-            if key(vals) in solved:
+            k = key(vals)
+            if k in solved:
                 continue
             pt = self.evaluate(structure, vals)
-            solved[key(vals)] = pt.rss
+            solved[k] = pt.rss
             if best is None or pt.rss < best.rss:
                 best = pt
         if not params or max_evaluations <= 0:
