@@ -9,6 +9,7 @@ from ..identify.parts import PARTS
 from ..identify.search import PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
+from .off_centre import off_centre_test
 from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
 from .signatures import evidence as _evidence
 
@@ -395,6 +396,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             step_preds.append(cur.prediction)
     else:
         revisions = []
+    off_centre = None
+    if "saturation" in chosen and "asymmetry" in effects and "asymmetry" not in chosen and "asymmetry" not in untested:
+        off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds, step_preds, say)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     sgn = rec.output_sign
     model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn)
@@ -481,8 +485,53 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
                 revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
-                n_evaluations=vp.n_evaluations, _rec=rec, _base_pred=base_pt.prediction,
+                n_evaluations=vp.n_evaluations, _off_centre=off_centre, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
+
+
+def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds, step_preds, say):
+    """Name asymmetry when the saturating output map is off-centre
+    (:mod:`.off_centre`): a step is added whose ``rms_before`` is the
+    held-out RMS with the map's centre held at the core's zero-input output
+    (every other parameter refitted) and ``rms_after`` the model's; the
+    model itself is unchanged."""
+    try:
+        test = off_centre_test(vp, ctx, struct, cur, sigma, rms_val, MIN_GAIN)
+    except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
+        say(f"off-centre test: failed ({exc})")
+        return None
+    if test is None or test["gain"] is None:
+        return test
+    say(f"off-centre test: the {test['kind']} map's centre sits {test['centre_off']:+.3f} output half-spans from "
+        f"the offset; held at it, the held-out mean square rises by {test['gain']:.2f} noise variances "
+        f"(BIC {test['bic_change']:+.1f})")
+    if not test["present"]:
+        return test
+    before, after = test["rms_held"], rms_val(cur)
+    span = rec.y_span
+    sig = {"signature": ("the saturating output map's centre off the core's zero-input output (the offset), in "
+                         "output half-spans (a symmetric actuator saturates both ends alike)"),
+           "statistic": round(abs(test["centre_off"]), 4), "threshold": test["threshold"], "present": True,
+           "testable": True, "where": "against output"}
+    sig["reading"] = "present: " + sig["signature"]
+    steps.append({"effect": "asymmetry", "rms_before": before, "rms_after": after,
+                  "rms_before_pct": 100.0 * before / span, "rms_after_pct": 100.0 * after / span,
+                  "evidence": {"signature": sig,
+                               "extension": {"kind": test["kind"] + "_centre",
+                                             "part": "off-centre saturating output map (held-out RMS with its "
+                                                     "centre held at the offset -> fitted)",
+                                             "centre": float(f"{test['centre']:.6g}"),
+                                             "offset": float(f"{test['offset']:.6g}")},
+                               "held_out_gain_noise_variances": round(test["gain"], 3),
+                               "bic_change": round(test["bic_change"], 1),
+                               "off_centre_of": f"saturation ({test['kind']})",
+                               "candidates": {}, "signature_absent": [], "acceptable": {},
+                               "refitted_jointly_before_acceptance": True}})
+    chosen.append("asymmetry")
+    chosen_kinds.append(test["kind"] + "_centre")
+    step_preds.append(cur.prediction)
+    say(f"added asymmetry (the {test['kind']} map off-centre): held-out RMS {before:.4g} -> {after:.4g}")
+    return test
 
 
 #: an acceptable part of another effect whose held-out gain at the step came

@@ -2,6 +2,8 @@
 and smooth saturation of the output.
 """
 
+import copy
+
 import numpy as np
 
 from .part_base import Context, Parameter, Part, register  # noqa: F401 (Context: the examples)
@@ -104,11 +106,39 @@ class OutputTanh(Part):
     slot = "output"
     description = "saturating output map y = c + S tanh((u - c)/S)"
 
+    #: the centre held at this value (relative to the output's mid-range, in
+    #: half-spans) instead of fitted, when not None (:meth:`held_at`)
+    fixed_centre = None
+
     def __init__(self):
         self.y_min, self.y_max = -1.0, 1.0
 
     def prepare(self, y, ctx):
         self.set_output_range(float(np.min(y)), float(np.max(y)))
+
+    def held_at(self, level):
+        """A copy of this map (the same output range) whose centre is held at
+        the output level `level` (output units) instead of fitted: the
+        symmetric map of the diagnosis's off-centre test.
+
+        Examples
+        --------
+        >>> part = OutputTanh()
+        >>> part.set_output_range(-1.0, 3.0)
+        >>> held = part.held_at(0.0)
+        >>> held.fixed_centre, [q.name for q in held.parameters(None, set())]
+        (-0.5, ['limit'])
+        >>> held.describe({"limit": 1.5})
+        {'part': 'saturating output map y = c + S tanh((u - c)/S)', 'centre': 0.0, 'limit': 3.0}
+        """
+        other = copy.copy(self)
+        half = 0.5 * (self.y_max - self.y_min) or 1.0
+        other.fixed_centre = (float(level) - 0.5 * (self.y_max + self.y_min)) / half
+        return other
+
+    def _centred(self, params):
+        """`params` without the centre when it is held (:meth:`held_at`)."""
+        return [q for q in params if not (self.fixed_centre is not None and q.name == "centre")]
 
     def set_output_range(self, y_min, y_max):
         """The measured output's extremes.
@@ -122,14 +152,16 @@ class OutputTanh(Part):
 
     def _map(self, values):
         half = 0.5 * (self.y_max - self.y_min) or 1.0
-        c = 0.5 * (self.y_max + self.y_min) + values["centre"] * half
+        centre = values["centre"] if self.fixed_centre is None else self.fixed_centre
+        c = 0.5 * (self.y_max + self.y_min) + centre * half
         S = values["limit"] * half
         return c, S
 
     def parameters(self, ctx, kinds):
         # the limit may sit just inside the measured half-span: the measured
         # extremes carry the noise's extremes (about 3 noise floors)
-        return [Parameter("limit", 1.5, 0.97, 20.0, True), Parameter("centre", 0.0, -CENTRE, CENTRE, False)]
+        return self._centred([Parameter("limit", 1.5, 0.97, 20.0, True),
+                              Parameter("centre", 0.0, -CENTRE, CENTRE, False)])
 
     def initial_values(self, ctx, kinds):
         return [{"limit": L, "centre": 0.0} for L in (1.0, 1.05, 1.15, 1.4, 2.0, 4.0)]
@@ -198,8 +230,8 @@ class OutputAlgebraic(OutputTanh):
 
     def parameters(self, ctx, kinds):
         c = 1.0 if self._one_sided(ctx) else CENTRE
-        return [Parameter("limit", 2.0, 0.97, 40.0, True), Parameter("centre", 0.0, -c, c, False),
-                Parameter("exponent", 1.5, 0.7, 8.0, True)]
+        return self._centred([Parameter("limit", 2.0, 0.97, 40.0, True), Parameter("centre", 0.0, -c, c, False),
+                              Parameter("exponent", 1.5, 0.7, 8.0, True)])
 
     def initial_values(self, ctx, kinds):
         out = [{"limit": L, "centre": 0.0, "exponent": p} for L in (1.05, 1.4, 2.5, 6.0) for p in (1.0, 2.0)]
