@@ -50,6 +50,8 @@ how the diagnosis decides, and run once for the nineteenth round's measurement (
 :data:`HOLDOUT18` (``cases_holdout18.py``) was written after HOLDOUT17 was measured, by a session that did not read
 how the diagnosis decides, and run once for the twentieth round's measurement (docs/diagnose.md, commit 702bd44,
 22 of 30 runs right); it is part of :data:`ALL` since.
+:data:`HOLDOUT19` (``cases_holdout19.py``) was written after HOLDOUT18 was measured, by a session that did not read
+how the diagnosis decides, to be run once for the twenty-first round's measurement; kept out of ALL until then.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -72,6 +74,7 @@ from .cases_holdout15 import HOLDOUT15  # noqa: F401
 from .cases_holdout16 import HOLDOUT16  # noqa: F401
 from .cases_holdout17 import HOLDOUT17  # noqa: F401
 from .cases_holdout18 import HOLDOUT18  # noqa: F401
+from .cases_holdout19 import HOLDOUT19  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8, **HOLDOUT9,
        **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16, **HOLDOUT17,
@@ -80,4 +83,4 @@ ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HO
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
            "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "HOLDOUT15", "HOLDOUT16", "HOLDOUT17", "HOLDOUT18",
-           "ALL"]
+           "HOLDOUT19", "ALL"]
