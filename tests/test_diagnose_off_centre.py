@@ -84,6 +84,17 @@ def test_off_centre_saturation_is_named_asymmetry_too():
     names = [s["effect"] for s in doc["steps"]]
     assert "asymmetry" in names
     assert "off-centre" in res.report()
+    # the residual figure shows, before the asymmetry's panel, the same model with the
+    # map's centre held at the offset (its held-out RMS is the step's rms_before)
+    import matplotlib.pyplot as plt
+
+    gap = res.plots()["gap"]
+    titles = [a.get_title() for a in gap.axes]
+    assert len(titles) == 1 + len(res.steps) + 1 + bool(res.revisions)
+    k = [i for i, tt in enumerate(titles) if "centre held at the offset" in tt]
+    assert len(k) == 1 and titles[k[0] + 1].startswith("+ asymmetry")
+    assert f"{step['rms_before']:.3g}" in titles[k[0]]
+    plt.close("all")
 
 
 @pytest.mark.parametrize("shift", [0.0, 3.0])

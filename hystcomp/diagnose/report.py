@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 13
+SCHEMA_VERSION = 14
 
 
 def _jsonable(x):
@@ -233,14 +233,18 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 11; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 14; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
         floor's ``relative_standard_error`` in ``noise_floor_method``, 11 the
         steps' ``held_out_loss_without_it_noise_variances`` in ``evidence``:
         when two or more effects were named, what the held-out mean square
-        loses without each once the others are in).
+        loses without each once the others are in; 12 ``holds_oscillate``
+        in ``noise_floor_method``, 13 ``rms_heldout_pct``, 14 ``off_centre_of``
+        in the ``evidence`` of an asymmetry step named from an off-centre
+        saturating output map, whose ``rms_before`` is the held-out RMS with
+        the map's centre held at the offset).
 
         Returns
         -------
@@ -424,9 +428,14 @@ class Diagnosis:
         out["loops"] = fig
 
         # residual before and after each step, noise floor drawn
-        preds = self._step_preds
+        preds = list(self._step_preds)
         labels = ["base PI"]
+        off = getattr(self, "_off_centre", None)
         for st in self.steps:
+            if st["evidence"].get("off_centre_of") and off is not None and off.get("held") is not None:
+                # the panel before it: the same model with the map's centre held at the offset
+                preds.insert(len(labels), off["held"].prediction)
+                labels.append("the same model with the saturating output map's centre held at the offset")
             rv = st["evidence"].get("revised")
             if rv is not None and rv["by"] is not None:
                 if rv["effect_after"] == rv["effect_before"]:
@@ -434,6 +443,10 @@ class Diagnosis:
                     lab = f"+ {rv['effect_before']} ({rv['replaced']}, replaced by {rv['by']} in the revision)"
                 else:
                     lab = f"+ {rv['effect_before']} (replaced by {rv['effect_after']} in the revision)"
+            elif st["evidence"].get("off_centre_of"):
+                # the model is unchanged: this panel is the final residual, the
+                # saturating map's centre fitted instead of held at the offset
+                lab = "+ asymmetry (the saturating output map's centre fitted off the offset)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
                 if st.get("alternatives"):

@@ -397,8 +397,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     else:
         revisions = []
     off_centre = None
-    if "saturation" in chosen and "asymmetry" in effects and "asymmetry" not in chosen and "asymmetry" not in untested:
-        off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds, step_preds, say)
+    if "saturation" in chosen and "asymmetry" in effects and not {"asymmetry"} & (set(chosen) | set(untested)):
+        off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds,
+                                      step_preds, say)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     sgn = rec.output_sign
     model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn)
