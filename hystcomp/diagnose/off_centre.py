@@ -36,9 +36,7 @@ offset (0.05-0.06 on out-of-vocabulary cores whose parts stay tentative),
 set's strongly skewed Preisach core.
 """
 
-import numpy as np
-
-from ..identify.parts_output import ONE_SIDED_SPAN
+from ..identify.parts_output import one_sided
 from ..identify.search import Structure
 from .base import REST_BIC
 
@@ -83,14 +81,11 @@ def off_centre_test(vp, ctx, struct, cur, sigma, rms_val, min_gain):
     out = struct.output_part()
     if out is None or not hasattr(out, "held_at") or out.fixed_centre is not None:
         return None
-    if "centre" not in {q.name for q in out.parameters(ctx, set(struct.kinds))}:
-        return None
-    if ctx.n == 0 or np.ptp(ctx.x) < ONE_SIDED_SPAN or "offset" not in cur.names:
+    if ctx.n == 0 or one_sided(ctx) or "offset" not in cur.names:
         return None
     offset = float(cur.theta[cur.names.index("offset")])
     c, _ = out._map(cur.values[out.kind])
-    half = 0.5 * (out.y_max - out.y_min) or 1.0
-    off = (c - offset) / half
+    off = (c - offset) / out.mid_half()[1]
     res = {"kind": out.kind, "centre": c, "offset": offset, "centre_off": off, "threshold": OFF_CENTRE,
            "gain": None, "bic_change": None, "rms_held": None, "present": False, "held": None}
     if abs(off) < OFF_CENTRE:

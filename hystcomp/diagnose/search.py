@@ -221,9 +221,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         step_ev["acceptable"] = dict(acceptable or {})
         # judged after a joint refit of every nonlinear parameter (see JOINT_RETRY)
         step_ev["refitted_jointly_before_acceptance"] = part.kind in retried
-        steps.append({"effect": part.effect, "rms_before": before, "rms_after": after,
-                      "rms_before_pct": 100.0 * before / rec.y_span, "rms_after_pct": 100.0 * after / rec.y_span,
-                      "evidence": step_ev})
+        steps.append(_step_record(part.effect, before, after, rec.y_span, step_ev))
         chosen.append(part.effect)
         chosen_kinds.append(part.kind)
         step_trials.append(step_trial)
@@ -490,6 +488,13 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 _final_pred=cur.prediction, _step_preds=step_preds)
 
 
+def _step_record(effect, before, after, y_span, evidence):
+    """One entry of a diagnosis's ``steps``: the effect, the held-out RMS
+    before and after it (also in % of the output span) and its evidence."""
+    return {"effect": effect, "rms_before": before, "rms_after": after, "rms_before_pct": 100.0 * before / y_span,
+            "rms_after_pct": 100.0 * after / y_span, "evidence": evidence}
+
+
 def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds, step_preds, say):
     """Name asymmetry when the saturating output map is off-centre
     (:mod:`.off_centre`): a step is added whose ``rms_before`` is the
@@ -509,15 +514,13 @@ def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, c
     if not test["present"]:
         return test
     before, after = test["rms_held"], rms_val(cur)
-    span = rec.y_span
     sig = {"signature": ("the saturating output map's centre off the core's zero-input output (the offset), in "
                          "output half-spans (a symmetric actuator saturates both ends alike)"),
            "statistic": round(abs(test["centre_off"]), 4), "threshold": test["threshold"], "present": True,
            "testable": True, "where": "against output"}
     sig["reading"] = "present: " + sig["signature"]
-    steps.append({"effect": "asymmetry", "rms_before": before, "rms_after": after,
-                  "rms_before_pct": 100.0 * before / span, "rms_after_pct": 100.0 * after / span,
-                  "evidence": {"signature": sig,
+    steps.append(_step_record("asymmetry", before, after, rec.y_span,
+                              {"signature": sig,
                                "extension": {"kind": test["kind"] + "_centre",
                                              "part": "off-centre saturating output map (held-out RMS with its "
                                                      "centre held at the offset -> fitted)",
@@ -527,7 +530,7 @@ def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, c
                                "bic_change": round(test["bic_change"], 1),
                                "off_centre_of": f"saturation ({test['kind']})",
                                "candidates": {}, "signature_absent": [], "acceptable": {},
-                               "refitted_jointly_before_acceptance": True}})
+                               "refitted_jointly_before_acceptance": True}))
     chosen.append("asymmetry")
     chosen_kinds.append(test["kind"] + "_centre")
     step_preds.append(cur.prediction)

@@ -132,9 +132,14 @@ class OutputTanh(Part):
         {'part': 'saturating output map y = c + S tanh((u - c)/S)', 'centre': 0.0, 'limit': 3.0}
         """
         other = copy.copy(self)
-        half = 0.5 * (self.y_max - self.y_min) or 1.0
-        other.fixed_centre = (float(level) - 0.5 * (self.y_max + self.y_min)) / half
+        mid, half = self.mid_half()
+        other.fixed_centre = (float(level) - mid) / half
         return other
+
+    def mid_half(self):
+        """The output's mid-range and half-span (1 for a flat output): the
+        units of the centre and the limit."""
+        return 0.5 * (self.y_max + self.y_min), 0.5 * (self.y_max - self.y_min) or 1.0
 
     def _centred(self, params):
         """`params` without the centre when it is held (:meth:`held_at`)."""
@@ -151,9 +156,9 @@ class OutputTanh(Part):
         self.y_min, self.y_max = float(y_min), float(y_max)
 
     def _map(self, values):
-        half = 0.5 * (self.y_max - self.y_min) or 1.0
+        mid, half = self.mid_half()
         centre = values["centre"] if self.fixed_centre is None else self.fixed_centre
-        c = 0.5 * (self.y_max + self.y_min) + centre * half
+        c = mid + centre * half
         S = values["limit"] * half
         return c, S
 
@@ -194,6 +199,13 @@ class OutputTanh(Part):
 ONE_SIDED_SPAN = 1.5
 
 
+def one_sided(ctx):
+    """Whether the record of `ctx` is one-sided (a unipolar stroke: the
+    scaled input's span is less than :data:`ONE_SIDED_SPAN`; False for an
+    empty record)."""
+    return np.ptp(ctx.x) < ONE_SIDED_SPAN if ctx.n else False
+
+
 @register
 class OutputAlgebraic(OutputTanh):
     """Saturation on the output side with a knee of any sharpness, the
@@ -224,18 +236,14 @@ class OutputAlgebraic(OutputTanh):
     kind = "output_algebraic"
     description = "algebraic saturating output map y = c + S z/(1 + |z|^p)^(1/p), z = (u - c)/S"
 
-    @staticmethod
-    def _one_sided(ctx):
-        return np.ptp(ctx.x) < ONE_SIDED_SPAN if ctx.n else False
-
     def parameters(self, ctx, kinds):
-        c = 1.0 if self._one_sided(ctx) else CENTRE
+        c = 1.0 if one_sided(ctx) else CENTRE
         return self._centred([Parameter("limit", 2.0, 0.97, 40.0, True), Parameter("centre", 0.0, -c, c, False),
                               Parameter("exponent", 1.5, 0.7, 8.0, True)])
 
     def initial_values(self, ctx, kinds):
         out = [{"limit": L, "centre": 0.0, "exponent": p} for L in (1.05, 1.4, 2.5, 6.0) for p in (1.0, 2.0)]
-        if self._one_sided(ctx):
+        if one_sided(ctx):
             # the rest end of a unipolar stroke: the start of the record
             x = ctx.x
             side = -1.0 if abs(x[0] - x.min()) <= abs(x[0] - x.max()) else 1.0
