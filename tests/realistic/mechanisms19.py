@@ -20,28 +20,12 @@ import numpy as np
 from scipy.integrate import solve_ivp
 from scipy.linalg import expm
 
+# the play, the threshold grid and exponentially weighted plays are HOLDOUT18's, a path's turning points
+# HOLDOUT13's: the same laws (the cases and tests use them from here)
+from .mechanisms13 import turning_points  # noqa: F401
+from .mechanisms18 import exp_plays, grid, plays  # noqa: F401
+
 # ---- rate-independent cores ----
-
-
-def plays(v, r, w, w0, state=0.0, return_state=False):
-    """y = w0 v + sum_i w_i z_i, z_i the play (backlash) of threshold r_i >= 0, z_i(t) = min(max(z_i(t-), v(t) -
-    r_i), v(t) + r_i) (Krasnosel'skii & Pokrovskii, *Systems with Hysteresis*, 1989; Visintin, *Differential Models
-    of Hysteresis*, 1994, ch. 3), from the given state (a number or one per play; 0: virgin)."""
-    v = np.asarray(v, float)
-    r = np.asarray(r, float)
-    w = np.asarray(w, float)
-    z = np.zeros(r.shape) + np.asarray(state, float)
-    s = np.empty(len(v))
-    for k, x in enumerate(v.tolist()):
-        z = np.minimum(np.maximum(z, x - r), x + r)
-        s[k] = w @ z
-    y = w0 * v + s
-    return (y, z) if return_state else y
-
-
-def grid(n, r_max):
-    """n thresholds at the midpoints of n equal cells of (0, r_max)."""
-    return (np.arange(n) + 0.5) * (r_max / n)
 
 
 def maxwell_plays(n, r_max, a, w0):
@@ -51,23 +35,6 @@ def maxwell_plays(n, r_max, a, w0):
     r = grid(n, r_max)
     dens = r * r * np.exp(-r * r / (2 * a * a))
     return r, (1 - w0) * dens / dens.sum()
-
-
-def exp_plays(n, r_max, scale, w0):
-    """Thresholds on :func:`grid` weighted by exp(-r / scale), summing to 1 - w0."""
-    r = grid(n, r_max)
-    dens = np.exp(-r / scale)
-    return r, (1 - w0) * dens / dens.sum()
-
-
-def turning_points(x):
-    """The first value, the turning points and the last value of a path (repeats collapsed)."""
-    x = np.asarray(x, float)
-    x = x[np.r_[True, np.diff(x) != 0]]
-    if len(x) < 3:
-        return x
-    s = np.sign(np.diff(x))
-    return x[np.r_[0, np.flatnonzero(s[1:] != s[:-1]) + 1, len(x) - 1]]
 
 
 # ---- signals ----
