@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 14
+SCHEMA_VERSION = 15
 
 
 def _jsonable(x):
@@ -233,7 +233,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 14; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 15; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -244,7 +244,9 @@ class Diagnosis:
         in ``noise_floor_method``, 13 ``rms_heldout_pct``, 14 ``off_centre_of``
         in the ``evidence`` of an asymmetry step named from an off-centre
         saturating output map, whose ``rms_before`` is the held-out RMS with
-        the map's centre held at the offset).
+        the map's centre held at the offset, 15 ``start_or_trend`` in the
+        ``evidence`` of a step where a drift and an initial state gained
+        alike held out and the training fit chose between them).
 
         Returns
         -------
@@ -311,10 +313,17 @@ class Diagnosis:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
                              f"{loss + 0.0:.3g} noise variances" + (" -- dropped at the revision" if st.get("dropped")
                                                                else ""))
+            told = st["evidence"].get("start_or_trend") or {}
             for a in st.get("alternatives", []):
-                lines.append(f"  near tie: {a['effect']} ({a['kind']}) lowers the held-out mean square by "
-                             f"{a['held_out_gain_noise_variances']:.3g} noise variances against "
-                             f"{a['named_gain_noise_variances']:.3g}: the record does not tell them apart")
+                head = (f"  near tie: {a['effect']} ({a['kind']}) lowers the held-out mean square by "
+                        f"{a['held_out_gain_noise_variances']:.3g} noise variances against "
+                        f"{a['named_gain_noise_variances']:.3g}")
+                if a["kind"] == told.get("held_out_chose"):
+                    bic = told["training_bic_change"]
+                    lines.append(head + f"; the training part, which holds the record's start, takes {st['effect']} "
+                                 f"(its BIC lower by {bic[a['kind']] - bic[told['taken']]:.0f})")
+                else:
+                    lines.append(head + ": the record does not tell them apart")
         for rv in getattr(self, "revisions", []):
             what = f"replaced by {rv['by']} ({rv['effect_after']})" if rv["by"] else "dropped"
             lines.append(f"revision: step {rv['step']}'s {rv['replaced']} {what}: held-out RMS {rv['rms_before']:.4g} "

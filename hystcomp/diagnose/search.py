@@ -12,6 +12,7 @@ from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F
 from .off_centre import off_centre_test
 from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
 from .signatures import evidence as _evidence
+from .start_or_trend import start_or_trend, start_or_trend_revised
 
 #: the canonical effect names, in the order the candidates are tried
 EFFECTS = ("rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "saturation", "output_saturation",
@@ -368,6 +369,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             close = [j for j in ok if top - j[0] <= PARSIMONY]
             kind = min(close, key=lambda j: (_n_parameters(trials[j[1]][0], trials[j[1]][1], ctx),
                                              trials[j[1]][0].occam_rank, -j[0]))[1]
+            # a drift and an initial state that gain alike held out: the training fit decides
+            kind, told = start_or_trend(kind, ok, AMBIGUOUS)
             part, st, pt, _ = trials[kind]
             # joint refit of every nonlinear parameter, warm-started
             n_par = len(st.parameters(ctx))
@@ -378,6 +381,11 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     pt = joint
             add_step(part, st, pt, cur, trials, {k: tr[3] for k, tr in trials.items()},
                      acceptable={j[1]: round(j[0], 4) for j in ok})
+            if told is not None:
+                steps[-1]["evidence"]["start_or_trend"] = told
+                say(f"step {len(chosen)}: {part.effect} ({kind}) rather than {PARTS[told['held_out_chose']].effect}: "
+                    f"a near tie held out, training BIC {told['training_bic_change'][kind]:.1f} against "
+                    f"{told['training_bic_change'][told['held_out_chose']]:.1f}")
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
@@ -725,12 +733,17 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         close = [c for c in tried if rms_val(c[2]) ** 2 <= lowest + PARSIMONY * s2]
         best = min(close, key=lambda c: (_n_parameters(PARTS[c[0]](), c[1], ctx), c[0] != kind,
                                          rms_val(c[2])))
+        # a drift and an initial state within the near tie: the training fit decides
+        by_bic = start_or_trend_revised(best, tried, margin, rms_val)
+        by_bic, best = by_bic is not best, by_bic
         if best[0] != kind:
             alt, st, pt = best
             cls = PARTS[alt]
             revisions.append({"step": j + 1, "replaced": kind, "by": alt, "effect_before": chosen[j],
                               "effect_after": cls.effect, "rms_before": rms_val(cur), "rms_after": rms_val(pt),
-                              "reason": ("near tie at its step; the other part fits better with the later "
+                              "reason": ("a drift and an initial state gain alike held out; the training part, "
+                                         "which holds the record's start, tells them apart") if by_bic else
+                                        ("near tie at its step; the other part fits better with the later "
                                          "effects in the model") if alt in near else
                                         ("another form of the same effect fits better with the later effects "
                                          "in the model")})
