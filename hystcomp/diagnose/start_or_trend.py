@@ -3,12 +3,12 @@
 An unknown initial state (a preload history, a memory left by earlier use)
 misfits the record only until the input's first full excursion: from there on
 the plays have run over the whole range and forget where they started (the
-wiping-out property of the PI model, eq. 18; Mayergoyz 1991, ch. 1, for
-the Preisach family it belongs to). A drift goes on in time. A drift that settles early (an
-exponential with a short time constant, or a broken line whose first segment
-carries it) draws the same start, and after it both are flat: on the held-out
-part, the record's last 30 % (or a block inside it), the two parts then gain
-alike. Measured on the twenty realistic sets before this rule (round 22):
+wiping-out property of the PI model, eq. 18; Mayergoyz 1991, ch. 1, for the
+Preisach family it belongs to). A drift goes on in time. A drift that settles
+early (an exponential with a short time constant, or a broken line whose
+first segment carries it) draws the same start, and after it both are flat:
+on the held-out part, the record's last 30 % (or a block inside it), the two
+parts then gain alike. Measured on the twenty realistic sets before this rule (round 22):
 at the first step of 43 runs the best drift part and the best initial-state
 part both gained within 10 % of the best held-out gain (0.1-9.1 % apart).
 On the 41 of them whose record holds one of the two effects, the larger
