@@ -734,8 +734,8 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         best = min(close, key=lambda c: (_n_parameters(PARTS[c[0]](), c[1], ctx), c[0] != kind,
                                          rms_val(c[2])))
         # a drift and an initial state within the near tie: the training fit decides
-        by_bic = start_or_trend_revised(best, tried, margin, rms_val)
-        by_bic, best = by_bic is not best, by_bic
+        taken = start_or_trend_revised(best, tried, margin, rms_val)
+        by_bic, best = taken is not best, taken
         if best[0] != kind:
             alt, st, pt = best
             cls = PARTS[alt]

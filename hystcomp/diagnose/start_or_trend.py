@@ -39,6 +39,22 @@ __all__ = ["START_OR_TREND", "start_or_trend", "start_or_trend_revised"]
 START_OR_TREND = {"drift": "trend", "gain_drift": "trend", "initial_state": "start"}
 
 
+def _rival(kind, candidates, kind_of, bic_of, near):
+    """The candidate of the other kind (drift against initial state) among
+    those for which `near` holds, with the lowest training BIC, when that is
+    lower than that of `kind`'s own candidate (among `candidates` too) by
+    more than ``REST_BIC``; else None."""
+    side = START_OR_TREND.get(PARTS[kind].effect)
+    if side is None:
+        return None
+    rivals = [c for c in candidates if START_OR_TREND.get(PARTS[kind_of(c)].effect) not in (None, side) and near(c)]
+    if not rivals:
+        return None
+    mine = next(c for c in candidates if kind_of(c) == kind)
+    other = min(rivals, key=bic_of)
+    return other if bic_of(other) < bic_of(mine) - REST_BIC else None
+
+
 def start_or_trend(kind, ok, ambiguous):
     """The part to add at a step, between a drift and an initial state.
 
@@ -61,18 +77,13 @@ def start_or_trend(kind, ok, ambiguous):
         When the choice changed: the part the held-out gain chose, the one
         taken, both held-out gains and both training BIC changes.
     """
-    side = START_OR_TREND.get(PARTS[kind].effect)
-    if side is None or not ok:
+    if not ok:
         return kind, None
     top = ok[0][0]
+    best = _rival(kind, ok, lambda j: j[1], lambda j: j[2], lambda j: j[0] >= (1.0 - ambiguous) * top)
+    if best is None:
+        return kind, None
     mine = next(j for j in ok if j[1] == kind)
-    rivals = [j for j in ok if START_OR_TREND.get(PARTS[j[1]].effect) not in (None, side)
-              and j[0] >= (1.0 - ambiguous) * top]
-    if not rivals:
-        return kind, None
-    best = min(rivals, key=lambda j: j[2])
-    if best[2] >= mine[2] - REST_BIC:
-        return kind, None
     why = {"held_out_chose": kind, "taken": best[1],
            "held_out_gain_noise_variances": {kind: round(mine[0], 3), best[1]: round(best[0], 3)},
            "training_bic_change": {kind: round(mine[2], 1), best[1]: round(best[2], 1)},
@@ -105,13 +116,7 @@ def start_or_trend_revised(best, tried, margin, rms_val):
         within `margin` of it whose training BIC is lower by more than
         ``REST_BIC``.
     """
-    side = START_OR_TREND.get(PARTS[best[0]].effect)
-    if side is None:
-        return best
     floor = rms_val(best[2]) ** 2
-    rivals = [c for c in tried if START_OR_TREND.get(PARTS[c[0]].effect) not in (None, side)
-              and rms_val(c[2]) ** 2 - floor <= margin]
-    if not rivals:
-        return best
-    other = min(rivals, key=lambda c: c[2].bic)
-    return other if other[2].bic < best[2].bic - REST_BIC else best
+    other = _rival(best[0], tried, lambda c: c[0], lambda c: c[2].bic,
+                   lambda c: rms_val(c[2]) ** 2 - floor <= margin)
+    return best if other is None else other
