@@ -156,6 +156,32 @@ def _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit):
     return xn, checked_limit
 
 
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True, inline="always")
+def _other_side(f, xp, fp, x_other, f_other):
+    """The last trial input whose output missed the target on the other side
+    of the newest trial's (f: the newest trial's miss; xp, fp: the trial
+    before it): the far end of the bracket, where the output jumps across the
+    target when the bracket closes without meeting it."""
+    if (f < 0.0) != (fp < 0.0) and fp != 0.0:
+        return xp, fp
+    return x_other, f_other
+
+
+@njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True, inline="always")
+def _jump(f, x, sr, sl, x_other, f_other):
+    """Whether the output jumps across the target between the newest trial x
+    (miss f, one-sided slopes sr, sl) and the far end of the closed bracket
+    (x_other, f_other): the two misses differ by more than a thousand times
+    what the slope at x carries over the bracket's width.  A jump comes from a
+    boundary that leaves an envelope's domain (-inf or +inf there, eq. 23) while
+    the other envelope lies below it (crossing envelopes: a band that is
+    inverted there); a steep but continuous output (an Atanh envelope near
+    its domain's end) is not one."""
+    if f_other == 0.0 or (f_other < 0.0) == (f < 0.0):
+        return False
+    return abs(f - f_other) > 1e3 * max(sr, sl, 0.0) * abs(x - x_other)
+
+
 @njit(cache=True, no_cfunc_wrapper=True, no_cpython_wrapper=True, nogil=True)
 def _input_scale(r):
     """The model's input scale: its largest threshold (1 without a positive one)."""
@@ -278,16 +304,27 @@ def _play_solve_template(u, r, p, p0, state, xprev, kind, prm, xmin, xmax, rtol,
             lo = xmin
         checked_limit = False
         it = 0
+        x_other, f_other = x, f
         while abs(f) > tol and it < 200:
             it += 1
+            xp, fp = x, f
             x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
             gx, dgx = _vd(kind, prm, a, b, c, x)
             y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c)
             f = y - target
+            x_other, f_other = _other_side(f, xp, fp, x_other, f_other)
             lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
             if stop:
                 break
-        if abs(f) > tol and (x >= xmax or x <= xmin):
+        at_limit = x >= xmax or x <= xmin
+        if abs(f) > tol and (at_limit or _jump(f, x, sr, sl, x_other, f_other)):
+            # not met: beyond the outputs at the input limits, or inside a jump of
+            # the output (the bracket closed on it): clipped to the nearer side
+            if not at_limit and abs(f_other) < abs(f):
+                x = x_other
+                gx, dgx = _vd(kind, prm, a, b, c, x)
+                y, sr, sl = _play_eval(x, r, p, p0, gx, dgx, state, cache, dcache, sv, sd, kind, prm, a, b, c)
+                f = y - target
             n_clip += 1
             if first < 0:
                 first = k
@@ -475,7 +512,10 @@ def inverse_solve(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, hscale
     and replaced by bisection when it leaves it, so piecewise-linear models
     (PI) are solved exactly in as many steps as kinks are crossed and smooth
     envelopes converge quadratically.  Targets beyond Y(xmin) or Y(xmax) are
-    clipped there.  info[0] = number of clipped samples, info[1] = first one,
+    clipped there; a target inside a jump of Y (a boundary that leaves an
+    envelope's domain while the other envelope lies below it: see `_jump`)
+    is clipped to the nearer side of the jump.  info[0] = number of clipped
+    samples, info[1] = first one,
     info[2] = largest iteration count.  Returns the last input.
     """
     if fam == FAM_PLAY:
@@ -527,16 +567,27 @@ def inverse_solve_other(fam, u, r, p, p0, state, xprev, kl, pl, kr, pr, kh, ph, 
             lo = xmin
         checked_limit = False
         it = 0
+        x_other, f_other = x, f
         while abs(f) > tol and it < 200:
             it += 1
+            xp, fp = x, f
             x, checked_limit = _newton_point(f, x, xprev, lo, hi, sr, sl, checked_limit)
             y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state,
                                            kl, pl, kr, pr, kh, ph, hscale)
             f = y - target
+            x_other, f_other = _other_side(f, xp, fp, x_other, f_other)
             lo, hi, stop = _shrink(f, x, lo, hi, xmin, xmax, xs)
             if stop:
                 break
-        if abs(f) > tol and (x >= xmax or x <= xmin):
+        at_limit = x >= xmax or x <= xmin
+        if abs(f) > tol and (at_limit or _jump(f, x, sr, sl, x_other, f_other)):
+            # not met: beyond the outputs at the input limits, or inside a jump of
+            # the output (the bracket closed on it): clipped to the nearer side
+            if not at_limit and abs(f_other) < abs(f):
+                x = x_other
+                y, sr, sl = _output_and_slopes(fam, x, xprev, r, p, p0, state,
+                                               kl, pl, kr, pr, kh, ph, hscale)
+                f = y - target
             n_clip += 1
             if first < 0:
                 first = k

@@ -180,8 +180,10 @@ class ExactInverse:
         looser positive partial sums suffice.
     on_unreachable : {"clip", "raise"}
         A target beyond the outputs the model can reach (saturating
-        envelopes, input limits) is clipped to the nearest reachable output
-        and reported with an :class:`UnreachableWarning` naming the count and
+        envelopes, input limits), or inside a jump of its output (asymmetric
+        envelopes that cross, one of them with a bounded domain: a boundary
+        that leaves its envelope's domain stops binding), is clipped to the
+        nearest reachable output and reported with an :class:`UnreachableWarning` naming the count and
         first sample index (also in ``last_unreachable``), or raises.
     input_limits : (float, float), optional
         Bounds of the compensator's output, e.g. an amplifier's voltage
@@ -342,7 +344,8 @@ class ExactInverse:
         if count:
             msg = (
                 f"{count} of {target.size} targets are outside the outputs the model can reach "
-                f"with inputs in {self.input_limits} (first at sample index {first}, u = {target[first]:.6g})"
+                f"with inputs in {self.input_limits} or fall in a jump of its output (first at sample "
+                f"index {first}, u = {target[first]:.6g})"
             )
             if self.on_unreachable == "raise":
                 raise ValueError(msg)

@@ -226,3 +226,52 @@ def test_exact_inverse_every_family_and_chunks(model):
     # its state holds [v_last, model state]: continuing the model from it works
     _, ms = model.simulate(v, return_state=True)
     np.testing.assert_allclose(s[1:], ms, rtol=0, atol=1e-12 * max(1.0, np.max(np.abs(ms))))
+
+
+def _jump_model():
+    # crossing envelopes (0.5 v above v for v < 0) and a left one bounded to [-8, 8]: once
+    # v - r_5 leaves the domain, that play's lower boundary stops binding and its output drops
+    # from 0.5 (v - r_5) to v + r_5, so the model's output jumps at v = -8 + r_5 (found by
+    # hypothesis in test_properties.test_exact_inverse_composition, round 23)
+    r = np.array([0.15378899, 0.30757799, 0.35757799, 0.85757799, 1.35757799])
+    p = np.array([0.20652791, 0.01, 1.0, 1.0, 0.20652791])
+    return MGPI(r, p, 1.0, envelope_left=Polynomial([0.0, 0.5, 0.0, 0.0], interval=(-8.0, 8.0)),
+                envelope_right=Identity()), -8.0 + r[-1]
+
+
+def test_exact_inverse_target_in_a_jump():
+    model, x_jump = _jump_model()
+    # the jump, from the virgin state: the outputs just above and just below it
+    y_above, y_below = model.simulate(np.array([x_jump]))[0], model.simulate(np.array([x_jump - 1e-12]))[0]
+    assert y_above - y_below > 0.1
+    comp = model.exact_inverse()
+    inside = [y_below + 0.3 * (y_above - y_below), y_below + 0.7 * (y_above - y_below)]
+    for target in inside:
+        with pytest.warns(UnreachableWarning, match="jump of its output"):
+            v = comp.simulate(np.array([target]))
+        assert comp.last_unreachable == (1, 0)
+        # clipped to the nearer side of the jump (to 1e-10: the bracket closes within 1e-15 of the
+        # input, the reference point below is 1e-12 off the jump, the output's slope there is about 2)
+        nearer = y_below if target - y_below < y_above - target else y_above
+        assert model.simulate(v)[0] == pytest.approx(nearer, abs=1e-10)
+        with pytest.raises(ValueError, match="jump of its output"):
+            ExactInverse(model, on_unreachable="raise").simulate(np.array([target]))
+    # targets on either side of the jump are met to 1e-12 of the span, with no warning
+    u = np.array([-10.0, y_below - 0.05, y_above + 0.05, -13.0, -6.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnreachableWarning)
+        v = comp.simulate(u)
+    assert comp.last_unreachable == (0, -1)
+    np.testing.assert_allclose(model.simulate(v), u, rtol=0, atol=1e-12 * np.ptp(u))
+
+
+def test_steep_continuous_output_is_not_a_jump():
+    # an Atanh envelope near its domain's end is steep, not discontinuous: targets there are met
+    from hystcomp.envelopes import Atanh
+    model = MGPI(np.array([0.1, 0.2]), np.array([0.5, 0.5]), 1.0, envelope_left=Atanh(1.0, 0.5),
+                 envelope_right=Atanh(2.0, 0.5))
+    u = np.array([3.0, 6.0, 9.0, -9.0, 4.0])
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", UnreachableWarning)
+        v = model.exact_inverse().simulate(u)
+    np.testing.assert_allclose(model.simulate(v), u, rtol=0, atol=1e-9 * np.ptp(u))
