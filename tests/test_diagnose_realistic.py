@@ -1,5 +1,9 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
+Marked ``slow`` (about 1,200 CPU-seconds, 10 minutes on two cores): it runs with
+``pytest -m slow``, not in the default suite, which runs a sample of it
+(``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
+
 Every case of the tuning, held-out and HOLDOUT2-20 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
@@ -23,7 +27,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "benchmarks"))
 from eval_diagnose_realistic import EXPLAINED_LIMIT, one_blas_thread, run_one  # noqa: E402
 from realistic import ALL, family  # noqa: E402
 
-pytestmark = pytest.mark.realistic
+pytestmark = [pytest.mark.realistic, pytest.mark.slow]
 SEED = 0
 
 

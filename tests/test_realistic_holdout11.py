@@ -22,6 +22,9 @@ from realistic import mechanisms as me
 from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
 
 P = "holdout11_"
+#: a measured set's laws were checked when it was written and its generator is frozen; they cost 29-176 s a
+#: set in the suite, so they run with `pytest -m slow` (the default suite builds every case at seed 0)
+pytestmark = pytest.mark.slow
 #: the effect names the set expects (seven families: gain_drift and drift are one, as are the saturations)
 EFFECTS = {"creep", "rate_dependence", "drift", "gain_drift", "asymmetry", "output_saturation", "initial_state",
            "delay"}

@@ -25,6 +25,9 @@ from realistic import mechanisms13 as m13
 from test_realistic_generator import _assert_measured_set, _assert_set_layout, _lag_samples
 
 P = "holdout13_"
+#: a measured set's laws were checked when it was written and its generator is frozen; they cost 29-176 s a
+#: set in the suite, so they run with `pytest -m slow` (the default suite builds every case at seed 0)
+pytestmark = pytest.mark.slow
 #: the effect names the set expects (seven families)
 EFFECTS = {"creep", "rate_dependence", "drift", "asymmetry", "output_saturation", "initial_state", "delay"}
 #: records on a unipolar stroke (0 ... 100 V)

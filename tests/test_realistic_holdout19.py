@@ -26,6 +26,9 @@ from test_realistic_generator import (_assert_measured_set, _assert_set_layout, 
                                       _linear_misfit, _rms)
 
 P = "holdout19_"
+#: a measured set's laws were checked when it was written and its generator is frozen; they cost 29-176 s a
+#: set in the suite, so they run with `pytest -m slow` (the default suite builds every case at seed 0)
+pytestmark = pytest.mark.slow
 #: the effect names the set expects (seven families)
 EFFECTS = {"creep", "rate_dependence", "gain_drift", "asymmetry", "saturation", "initial_state", "delay"}
 CLEAN = "clean_maxwell_plays_rossler_attractor_1930hz"

@@ -1,0 +1,88 @@
+"""Issue 10's acceptance on a sample of the realistic records, in the default suite.
+
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the twenty-one sets at
+seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
+benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
+issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
+the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
+round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
+other set (27 clean records in all, 5 CPU-seconds). 54 runs at seed 0; 52 were right in round 22
+(HOLDOUT9's unipolar generalized plays and HOLDOUT14's eddy-field separation were not).
+"""
+
+import os
+import sys
+from concurrent.futures import ProcessPoolExecutor
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "benchmarks"))
+
+from eval_diagnose_realistic import one_blas_thread, run_one  # noqa: E402
+from realistic import ALL, family  # noqa: E402
+from test_diagnose_realistic import _over, _table  # noqa: E402
+
+pytestmark = pytest.mark.realistic
+SEED = 0
+#: the whole sets in the sample (the three quickest to diagnose at seed 0 in round 22)
+SETS = ("holdout4_", "holdout9_", "holdout14_")
+
+
+def _in_sample(name):
+    # every set names its clean case "clean_..." or "<set>_clean_..." (test_the_sample checks
+    # that these are the clean records: no effect, verdict explained)
+    return name.startswith(SETS) or name.startswith("clean_") or "_clean_" in name
+
+
+@pytest.fixture(scope="module")
+def rows():
+    jobs = sorted(n for n in ALL if _in_sample(n))
+    with ProcessPoolExecutor(2, initializer=one_blas_thread) as ex:
+        return list(ex.map(run_one, jobs, [SEED] * len(jobs)))
+
+
+def test_the_sample(rows):
+    assert len(rows) == 54
+    assert sum(r["clean"] for r in rows) == 27
+    assert sum(r["case"].startswith(SETS) for r in rows) == 30
+    # outside the three sets, the sample is every set's clean record and nothing else
+    assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
+
+
+def test_no_crash(rows):
+    bad = [r for r in rows if r["error"]]
+    assert not bad, _table(bad)
+
+
+def test_right_verdict_no_worse_than_measured(rows):
+    # 52/54 right in round 22; at least 49 (91 %): three runs of margin for decisions that sit on
+    # a threshold and may fall the other way on another machine's BLAS
+    right = sum(r["right"] for r in rows)
+    assert right >= 49, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+
+
+def test_no_effect_named_on_clean_records(rows):
+    named = [r for r in rows if r["clean"] and (r["effects"] or r["verdict"] != "explained")]
+    assert not named, _table(named)
+
+
+def test_explained_means_within_the_noise(rows):
+    over = [r for r in rows if r["explained_over_limit"]]
+    assert not over, _over(over)
+    assert all(r["rms_heldout"] <= 1.5 * r["noise_floor"] for r in rows if r["verdict"] == "explained")
+
+
+def test_out_of_vocabulary_records_are_unexplained(rows):
+    oov = [r for r in rows if "_oov_" in r["case"]]
+    assert len(oov) == 3
+    wrong = [r for r in oov if r["verdict"] != "unexplained" or r["effects"]]
+    assert not wrong, _table(wrong)
+
+
+def test_both_effects_named_in_combined_cases(rows):
+    # the sample's three pairs were named in full in round 22 (the full set's misses are elsewhere)
+    comb = [r for r in rows if r["combined"]]
+    assert len(comb) == 3
+    missed = [r for r in comb if not family(r["expected"]) <= family(r["effects"])]
+    assert not missed, _table(missed)
