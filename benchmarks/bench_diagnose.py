@@ -13,7 +13,11 @@ the first 65 % of the record and falls back: the held-out end leaves it
 unexplained, so the diagnosis runs its search twice (re-judged on held-out
 blocks spread over the record, round 9), the slowest case.
 
-Run: ``python benchmarks/bench_diagnose.py [--effect drift] [--turning-drift] [--repeats 2]``
+``--workers`` (default ``1 2``): the diagnosis is timed with each number of
+threads fitting a step's candidates (``diagnose(..., workers=...)``),
+alternately; the answers must be the same.
+
+Run: ``python benchmarks/bench_diagnose.py [--effect drift] [--turning-drift] [--repeats 2] [--workers 1 2]``
 """
 
 import argparse
@@ -35,6 +39,8 @@ def main(argv=None):
     ap.add_argument("--effect", default="creep", help="hidden effect (or none)")
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--repeats", type=int, default=1)
+    ap.add_argument("--workers", type=int, nargs="+", default=[1, 2],
+                    help="threads fitting a step's candidates (each timed; default 1 and 2)")
     ap.add_argument("--turning-drift", action="store_true",
                     help="add an offset that rises and falls back (the search runs twice)")
     args = ap.parse_args(argv)
@@ -56,17 +62,22 @@ def main(argv=None):
         fit_weights(d.v, d.y, model="pi", validation=mask)
     t_base = time.perf_counter() - t0
 
-    times, rep = [], None
+    times, reps = {w: [] for w in args.workers}, {}
     for _ in range(args.repeats):
-        t0 = time.perf_counter()
-        rep = diagnose(d.t, d.v, d.y, progress=True)
-        times.append(time.perf_counter() - t0)
-    best = min(times)
+        for w in args.workers:      # alternately, so that a change in the load hits both
+            t0 = time.perf_counter()
+            reps[w] = diagnose(d.t, d.v, d.y, progress=True, workers=w)
+            times[w].append(time.perf_counter() - t0)
     print(f"\nbaseline: one plain PI fit (fit_weights, 20 thresholds): {t_base:8.2f} s")
-    verdict = "PASS" if best <= TARGET else "FAIL"
-    print(f"diagnose, all {len(ALL)} candidate effects:                  {best:8.2f} s  "
-          f"(= {best / t_base:.0f} plain fits; target <= {TARGET:.0f} s: {verdict}; "
-          f"{rep.n_evaluations} inner solves)")
+    for w in args.workers:
+        best, rep = min(times[w]), reps[w]
+        verdict = "PASS" if best <= TARGET else "FAIL"
+        print(f"diagnose, all {len(ALL)} candidate effects, workers={w}:        {best:8.2f} s  "
+              f"(= {best / t_base:.0f} plain fits; target <= {TARGET:.0f} s: {verdict}; "
+              f"{rep.n_evaluations} inner solves)")
+    answers = {(tuple(r.effects), r.verdict, r.rms_after, r.n_evaluations) for r in reps.values()}
+    print("the same answer with every number of workers: " + ("yes" if len(answers) == 1 else "NO"))
+    rep = reps[args.workers[0]]
     if getattr(rep, "other_split", None) is not None:
         print(f"re-judged on held-out blocks ({'taken' if rep.other_split['held_out'] != 'blocks' else 'not taken'}): "
               "two searches")

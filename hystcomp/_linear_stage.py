@@ -22,7 +22,7 @@ __all__ = ["LinearStage", "lag_bank"]
 # ----------------------------------------------------------------------------
 # compiled kernels (one loop over samples each)
 # ----------------------------------------------------------------------------
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _ss_columns(A, B, C, D, U, X, out):
     """Filter every column of U (n, m) through the SISO system (A, B, C, D);
     X (m, ns) holds one state per column, updated in place.
@@ -72,7 +72,7 @@ def _ss_columns(A, B, C, D, U, X, out):
                 X[j, a] = xn[a]
 
 
-@njit(cache=True, no_cfunc_wrapper=True)
+@njit(cache=True, no_cfunc_wrapper=True, nogil=True)
 def _lag_bank(v, a, x, out):
     """out[k, j] = x_j after sample k, x_j <- a_j x_j + (1 - a_j) v_k."""
     for k in range(v.size):

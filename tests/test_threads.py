@@ -17,6 +17,16 @@ def test_kernels_are_nogil():
         assert f.targetoptions.get("nogil") is True, f.__name__
 
 
+def test_identification_kernels_are_nogil():
+    # the diagnosis fits a step's candidates on threads (diagnose(..., workers=2)): the kernels
+    # behind its columns release the GIL (round 23: without it two threads took as long as one)
+    from hystcomp import _linear_stage
+    from hystcomp.identify import _part_kernels as pk
+    for f in (pk.core_columns, pk.fractional_delay, pk.drifting_delay, pk.slew_limit, pk.column_ranges,
+              _linear_stage._ss_columns, _linear_stage._lag_bank):
+        assert f.targetoptions.get("nogil") is True, f.__name__
+
+
 def test_two_threads_same_results():
     r = 0.5 * np.arange(1, 21)
     p = np.exp(-0.1 * r) * 0.5

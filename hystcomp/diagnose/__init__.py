@@ -59,7 +59,7 @@ ALL = EFFECTS
 
 
 def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20,
-             progress=True, *, time="t", input="v", output="y", held_out="auto"):
+             progress=True, *, time="t", input="v", output="y", held_out="auto", workers=1):
     """Name the effects a PI model lacks by evidence, add them, and give an
     honest verdict.
 
@@ -117,6 +117,13 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         re-judges it on blocks and reports the blocks' diagnosis if it
         names a drift or gain drift and leaves fewer noise floors
         (:attr:`Diagnosis.other_split` has the other split's verdict).
+    workers : int
+        Threads that fit a step's candidate effects side by side (default
+        1).  The diagnosis is the same with any number; with 2 on two
+        cores it takes about three quarters of the time
+        (``benchmarks/bench_diagnose.py --workers 1 2``).  Leave it at 1
+        when several records are diagnosed in parallel processes already
+        (:func:`diagnose_many` with an executor).
 
     Returns
     -------
@@ -166,6 +173,8 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
     n_thresholds = int(n_thresholds)
     if n_thresholds < 2:
         raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
+    if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
+        raise ValueError(f"Parameter workers is {workers!r} but should be an integer >= 1")
     # the inner solves are many small dense products (tall n x ~25 matrices): a
     # multi-threaded BLAS only adds contention on a shared machine (10-100x
     # slower under load, measured), so the search runs with one BLAS thread
@@ -179,7 +188,7 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         limit = threadpool_limits(limits=1, user_api="blas")
     with limit:
         kw = run_search(t, v, y, effects, validation, int(max_effects), n_thresholds, thresholds, progress,
-                        held_out)
+                        held_out, int(workers))
     return Diagnosis(**kw)
 
 

@@ -278,7 +278,8 @@ def add_arguments(parser):
     parser.add_argument("data", metavar="DATA.csv", nargs="+",
                         help="CSV file(s) with a header row; several files are diagnosed independently")
     parser.add_argument("--jobs", type=int, default=1,
-                        help="diagnose several files on this many processes (default 1)")
+                        help="diagnose several files on this many processes; with one file, fit each step's "
+                             "candidate effects on this many threads (the same diagnosis; default 1)")
     parser.add_argument("--time", default="t", help="time column [s] (default t)")
     parser.add_argument("--no-time", action="store_true",
                         help="the record has no time axis (a quasi-static point sequence such as a B-H "
@@ -348,7 +349,7 @@ def run(args):
     options = dict(validation=args.validation, max_effects=args.max_effects, held_out=args.held_out)
     try:
         if len(files) == 1:
-            reps = [_diagnose(records[0], options, not args.quiet)]
+            reps = [_diagnose(records[0], dict(options, workers=int(getattr(args, "jobs", 1))), not args.quiet)]
         else:
             from .many import diagnose_many
 

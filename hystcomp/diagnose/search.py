@@ -6,7 +6,7 @@ import time
 import numpy as np
 
 from ..identify.parts import PARTS
-from ..identify.search import PartsModel, Structure
+from ..identify.search import PartsModel, Structure, optimise_all
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .off_centre import off_centre_test
@@ -66,7 +66,8 @@ def _rms(a):
     return float(np.sqrt(np.mean(a ** 2))) if a.size else 0.0
 
 
-def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress, held_out="auto"):
+def run_search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, progress, held_out="auto",
+               workers=1):
     """The search behind :func:`hystcomp.diagnose.diagnose`; returns the
     keyword arguments of a :class:`~hystcomp.diagnose.report.Diagnosis`.
 
@@ -92,11 +93,11 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 bar.update(1)
 
         args = (t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick)
-        kw = _search(*args, held_out)
+        kw = _search(*args, held_out, workers)
         if held_out == "auto" and _blocks_may_tell(kw, effects):
             say(f"the held-out end leaves the record unexplained with no {' or '.join(INTERPOLATED)} named; "
                 f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
-            other = _search(*args, "blocks")
+            other = _search(*args, "blocks", workers)
             return _choose_split(kw, other, say)
         return kw
     finally:
@@ -160,7 +161,8 @@ def _choose_split(end, blocks, say):
     return chosen
 
 
-def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto"):
+def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto",
+            workers=1):
     t0 = time.perf_counter()
     rec = Record(t, v, y, validation, held_out)
     held = ~rec.train
@@ -235,6 +237,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         # this step (acceptance, the joint retry, pairs and near ties all need it),
         # so it is not fitted: the signature gates the fit
         not_fitted = []
+        jobs = []
         for cls in candidates:
             if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
                 continue
@@ -255,15 +258,16 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
             starts = [{part.kind: s} for s in part.initial_values(ctx, kinds)]
             k_new = len(part.parameters(ctx, kinds))
-            try:
-                free = {part.kind}
-                if part.slot == "after_output":
-                    # a term after the output map moves the map's operating point: refit both
-                    free.add(st.output_part().kind)
-                    k_new += len(st.output_part().parameters(ctx, kinds))
-                pt = vp.optimise(st, start, free=free, max_evaluations=12 * k_new, starts=starts)
-            except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
-                say(f"step {len(chosen) + 1}: {part.kind}: failed ({exc})")
+            free = {part.kind}
+            if part.slot == "after_output":
+                # a term after the output map moves the map's operating point: refit both
+                free.add(st.output_part().kind)
+                k_new += len(st.output_part().parameters(ctx, kinds))
+            jobs.append((part, st, dict(start=start, free=free, max_evaluations=12 * k_new, starts=starts)))
+        # the candidates' fits, in the order above (on `workers` threads: the same fits)
+        for (part, st, _), pt in zip(jobs, optimise_all(vp, [(st, job) for _, st, job in jobs], workers)):
+            if isinstance(pt, Exception):
+                say(f"step {len(chosen) + 1}: {part.kind}: failed ({pt})")
                 tick(f"diagnose step {len(chosen) + 1}")
                 continue
             tick(f"diagnose step {len(chosen) + 1}")
@@ -330,7 +334,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     judged[k] = ((cur_val ** 2 - rms_val(joint) ** 2) / sigma ** 2, j[1], joint.bic - cur.bic, j[3])
             judged.sort(reverse=True)
             ok = [j for j in judged if acceptable(j)]
-        pair = _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick)
+        pair = _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick, workers)
         if pair is not None:
             (ka, kb), pt_pair, st_pair = pair
             lead, lead_st, lead_pt, _ = trials[ka]
@@ -591,7 +595,7 @@ def _n_parameters(part, structure, ctx):
 PAIR_PARTNERS = 3
 
 
-def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick):
+def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess, say, tick, workers=1):
     """Two effects added together when one hides the other.
 
     The *lead* is the candidate that lowers the training BIC most among those
@@ -618,6 +622,7 @@ def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess
     partners = [k for _, k in strong[1:] if PARTS[k].effect != lead_part.effect
                 and not (lead_part.slot in ("output", "after_output") and PARTS[k].slot in ("output", "after_output"))]
     best = None
+    jobs = []
     for kind in partners[:PAIR_PARTNERS]:
         part = trials[kind][0]
         st = trials[lead][1].extended(part)
@@ -626,13 +631,12 @@ def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess
         for p, q in st.parameters(ctx):
             start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
         n_new = _n_parameters(lead_part, st, ctx) + _n_parameters(part, st, ctx)
-        try:
-            pt = vp.optimise(st, start, free={lead, kind}, max_evaluations=10 * max(n_new, 1))
-        except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
-            say(f"pair {lead} + {kind}: failed ({exc})")
+        jobs.append((kind, part, st, dict(start=start, free={lead, kind}, max_evaluations=10 * max(n_new, 1))))
+    for (kind, part, st, _), pt in zip(jobs, optimise_all(vp, [(st, kw) for _, _, st, kw in jobs], workers)):
+        tick("diagnose pairs")
+        if isinstance(pt, Exception):
+            say(f"pair {lead} + {kind}: failed ({pt})")
             continue
-        finally:
-            tick("diagnose pairs")
         rv = rms_val(pt)
         say(f"pair {lead_part.effect} + {part.effect} ({lead} + {kind}): held-out RMS {rv:.4g}")
         if best is None or rv < best[2]:

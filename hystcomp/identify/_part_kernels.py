@@ -101,7 +101,7 @@ def _relax(w, c, decay, overstress_scale):
     return c + e * decay
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.0, level=0.0, decay=0.0,
                  overstress_scale=0.0):
     """out[k, i] = modified play i after sample k (see the module docstring).
@@ -178,14 +178,14 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
             out[k, i] = wi
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def fractional_delay(x, d, out):
     """out[k] = x at sample k - d (linear interpolation; x[0] before the start):
     :func:`drifting_delay` with the same delay at both ends."""
     drifting_delay(x, d, d, out)
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def drifting_delay(x, d0, d1, out):
     """out[k] = x at sample k - d_k, d_k = d0 + (d1 - d0) k / (n - 1) (linear
     interpolation; x[0] before the start): a dead time that changes linearly
@@ -205,7 +205,7 @@ def drifting_delay(x, d0, d1, out):
                 out[k] = x[n - 1]
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def slew_limit(x, step, out):
     """out[k] follows x at most `step` per sample (a slew-rate limit: an
     amplifier whose output current is limited drives the capacitive stack at
@@ -225,7 +225,7 @@ def slew_limit(x, step, out):
         out[k] = u
 
 
-@njit(cache=True)
+@njit(cache=True, nogil=True)
 def column_ranges(a, k):
     """``max - min`` of each of the first `k` columns of `a` (rows in C
     order: one pass, where NumPy's two reductions along the rows of a

@@ -189,10 +189,12 @@ class Part:
     def _driver_output(self, ctx):
         """The frozen driver's output for the context's input (cached)."""
         key = (id(ctx.v), ctx.n)
-        if getattr(self, "_cache_key", None) != key:
-            self._cache_key = key
-            self._cache = self.driver.simulate(ctx.v)
-        return self._cache
+        hit = getattr(self, "_driven", None)
+        if hit is None or hit[0] != key:
+            # key and output in one attribute: a part shared by candidates fitted on
+            # threads never pairs one context's key with another's output
+            hit = self._driven = (key, self.driver.simulate(ctx.v))
+        return hit[1]
 
     def signature(self, residual, prediction, record, noise_floor):
         """The signature test of a new effect on a residual: a dict with

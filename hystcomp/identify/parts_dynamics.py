@@ -522,8 +522,10 @@ class _OutputBend(Part):
     def columns(self, values, ctx):
         h = self._driver_output(ctx)
         if self._center is None:        # fixed on the fitted record
-            self._center = 0.5 * (float(h.max()) + float(h.min()))
-            self._scale = 0.5 * float(np.ptp(h)) or 1.0
+            centre, scale = 0.5 * (float(h.max()) + float(h.min())), 0.5 * float(np.ptp(h)) or 1.0
+            # the scale first: a thread that sees the centre set sees the scale too
+            self._scale = scale
+            self._center = centre
         z = (h - self._center) / self._scale
         return self.shape(z, values)[:, None], np.array([-np.inf]), np.array([np.inf]), [self.kind]
 
