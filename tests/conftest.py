@@ -8,6 +8,7 @@ numba kernels or in the NumPy envelope code cannot hide in both.
 """
 
 import math
+import os
 
 import numpy as np
 import pytest
@@ -22,7 +23,9 @@ settings.register_profile(
     suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large],
     derandomize=False,
 )
-settings.load_profile("hystcomp")
+# a long search for edge cases (not run by default): HYSTCOMP_HYPOTHESIS=long pytest tests/test_properties.py ...
+settings.register_profile("hystcomp-long", parent=settings.get_profile("hystcomp"), max_examples=2000)
+settings.load_profile("hystcomp-long" if os.environ.get("HYSTCOMP_HYPOTHESIS") == "long" else "hystcomp")
 
 
 # ----------------------------------------------------------------------------
