@@ -6,7 +6,7 @@ import time
 import numpy as np
 
 from ..identify.parts import PARTS
-from ..identify.search import PartsModel, Structure, optimise_all
+from ..identify.search import FIT_ERRORS, PartsModel, Structure, optimise_all
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .off_centre import off_centre_test
@@ -321,7 +321,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     continue
                 try:
                     joint = vp.optimise(st, pt.values, free=None, max_evaluations=10 * n_par)
-                except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+                except FIT_ERRORS:
                     continue
                 finally:
                     tick(f"diagnose step {len(chosen) + 1}")
@@ -515,7 +515,7 @@ def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, c
     model itself is unchanged."""
     try:
         test = off_centre_test(vp, ctx, struct, cur, sigma, rms_val, MIN_GAIN)
-    except (ValueError, np.linalg.LinAlgError, FloatingPointError) as exc:
+    except FIT_ERRORS as exc:
         say(f"off-centre test: failed ({exc})")
         return None
     if test is None or test["gain"] is None:
@@ -727,7 +727,7 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
                 start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
             try:
                 pt = _refit(vp, ctx, st, start, rms_val, part, [{alt: v} for v in part.initial_values(ctx, set(st.kinds))])
-            except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+            except FIT_ERRORS:
                 continue
             say(f"revise: {kind} -> {alt}: held-out RMS {rms_val(cur):.4g} -> {rms_val(pt):.4g}")
             tried.append((alt, st, pt))
@@ -766,7 +766,7 @@ def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
         start = {k: dict(v) for k, v in cur.values.items() if k != kind}
         try:
             pt = _refit(vp, ctx, st, start, rms_val)
-        except (ValueError, np.linalg.LinAlgError, FloatingPointError):
+        except FIT_ERRORS:
             j += 1
             continue
         before, after = rms_val(cur), rms_val(pt)
