@@ -219,7 +219,7 @@ class _Problem:
         from scipy.linalg import null_space
 
         last = self._last
-        x, Gs, s, sigma, C, lb = last["x"], last["Gs"], last["s"], last["sigma"], last["C"], last["lb"]
+        x, Gs, s, C, lb = last["x"], last["Gs"], last["s"], last["C"], last["lb"]
         m = x.size
         rows = [C[(C @ x - lb) <= tol]]
         fixed = np.flatnonzero(~last["free"])
