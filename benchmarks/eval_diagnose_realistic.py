@@ -71,7 +71,8 @@ def run_one(name, seed):
     rec = KNOWN[name](seed)
     t0 = time.perf_counter()
     try:
-        res = diagnose(rec.t, rec.v, rec.y, progress=False)
+        # one thread a record: --jobs runs records side by side in processes
+        res = diagnose(rec.t, rec.v, rec.y, progress=False, workers=1)
         error = None
     except Exception as exc:  # a crash is a wrong answer, reported as such
         res, error = None, f"{type(exc).__name__}: {exc}"

@@ -51,15 +51,36 @@ from .record import HELD_OUT, find_holds
 from .report import SCHEMA_VERSION, Diagnosis
 from .search import EFFECTS, EXPLAINED, MIN_GAIN, run_search
 
-__all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "diagnose_many", "evidence", "add_arguments", "run",
-           "load_csv"]
+__all__ = ["EFFECTS", "ALL", "Diagnosis", "diagnose", "diagnose_many", "default_workers", "evidence", "add_arguments",
+           "run", "load_csv"]
 
 #: every effect (the default candidates of :func:`diagnose`)
 ALL = EFFECTS
 
 
+def default_workers():
+    """The threads :func:`diagnose` fits a step's candidates on when
+    ``workers`` is None: 2 when this process may run on two or more cores
+    (its CPU affinity, else ``os.cpu_count()``), else 1.  Two, not more:
+    the search's Python code holds the GIL, so a third thread gains little
+    (two take about three quarters of one's time, round 23).
+
+    Examples
+    --------
+    >>> default_workers() in (1, 2)
+    True
+    """
+    import os
+
+    try:
+        cores = len(os.sched_getaffinity(0))
+    except (AttributeError, OSError):      # not on Linux
+        cores = os.cpu_count() or 1
+    return 2 if cores >= 2 else 1
+
+
 def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base="pi", n_thresholds=20,
-             progress=True, *, time="t", input="v", output="y", held_out="auto", workers=1):
+             progress=True, *, time="t", input="v", output="y", held_out="auto", workers=None):
     """Name the effects a PI model lacks by evidence, add them, and give an
     honest verdict.
 
@@ -117,13 +138,14 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         re-judges it on blocks and reports the blocks' diagnosis if it
         names a drift or gain drift and leaves fewer noise floors
         (:attr:`Diagnosis.other_split` has the other split's verdict).
-    workers : int
-        Threads that fit a step's candidate effects side by side (default
-        1).  The diagnosis is the same with any number; with 2 on two
-        cores it takes about three quarters of the time
-        (``benchmarks/bench_diagnose.py --workers 1 2``).  Leave it at 1
-        when several records are diagnosed in parallel processes already
-        (:func:`diagnose_many` with an executor).
+    workers : int or None
+        Threads that fit a step's candidate effects side by side.  None
+        (the default): :func:`default_workers`, 2 when this process may run
+        on two or more cores, else 1.  The diagnosis is the same with any
+        number; with 2 on two cores it takes about three quarters of the
+        time (``benchmarks/bench_diagnose.py --workers 1 2``).  Pass 1 when
+        several records are diagnosed in parallel processes already
+        (:func:`diagnose_many` with an executor does).
 
     Returns
     -------
@@ -173,8 +195,10 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
     n_thresholds = int(n_thresholds)
     if n_thresholds < 2:
         raise ValueError(f"Parameter n_thresholds is {n_thresholds} but should be >= 2")
+    if workers is None:
+        workers = default_workers()
     if isinstance(workers, bool) or not isinstance(workers, (int, np.integer)) or workers < 1:
-        raise ValueError(f"Parameter workers is {workers!r} but should be an integer >= 1")
+        raise ValueError(f"Parameter workers is {workers!r} but should be None or an integer >= 1")
     # the inner solves are many small dense products (tall n x ~25 matrices): a
     # multi-threaded BLAS only adds contention on a shared machine (10-100x
     # slower under load, measured), so the search runs with one BLAS thread

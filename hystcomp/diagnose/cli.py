@@ -273,13 +273,14 @@ def add_arguments(parser):
     >>> import argparse
     >>> args = add_arguments(argparse.ArgumentParser()).parse_args(["data.csv", "--max-effects", "1"])
     >>> args.data, args.max_effects, args.validation, args.jobs
-    (['data.csv'], 1, 0.3, 1)
+    (['data.csv'], 1, 0.3, None)
     """
     parser.add_argument("data", metavar="DATA.csv", nargs="+",
                         help="CSV file(s) with a header row; several files are diagnosed independently")
-    parser.add_argument("--jobs", type=int, default=1,
-                        help="diagnose several files on this many processes; with one file, fit each step's "
-                             "candidate effects on this many threads (the same diagnosis; default 1)")
+    parser.add_argument("--jobs", type=int, default=None,
+                        help="diagnose several files on this many processes (default one after the other); "
+                             "with one file, fit each step's candidate effects on this many threads (the same "
+                             "diagnosis; default 2 on a machine with two or more cores, else 1)")
     parser.add_argument("--time", default="t", help="time column [s] (default t)")
     parser.add_argument("--no-time", action="store_true",
                         help="the record has no time axis (a quasi-static point sequence such as a B-H "
@@ -326,8 +327,9 @@ def run(args):
     2
     """
     files = list(args.data) if isinstance(args.data, (list, tuple)) else [args.data]
-    if int(getattr(args, "jobs", 1)) < 1:
-        return _fail(f"error: --jobs is {args.jobs} but should be >= 1")
+    jobs = getattr(args, "jobs", None)
+    if jobs is not None and jobs < 1:
+        return _fail(f"error: --jobs is {jobs} but should be >= 1")
     units = str(getattr(args, "units", "input units,output units")).split(",")
     if len(units) != 2 or not all(u.strip() for u in units):
         return _fail(f"error: --units is {args.units!r} but should be two units separated by a comma, e.g. V,um")
@@ -349,14 +351,14 @@ def run(args):
     options = dict(validation=args.validation, max_effects=args.max_effects, held_out=args.held_out)
     try:
         if len(files) == 1:
-            reps = [_diagnose(records[0], dict(options, workers=int(getattr(args, "jobs", 1))), not args.quiet)]
+            reps = [_diagnose(records[0], dict(options, workers=jobs), not args.quiet)]
         else:
             from .many import diagnose_many
 
-            if args.jobs > 1:
+            if jobs is not None and jobs > 1:
                 from concurrent.futures import ProcessPoolExecutor
 
-                with ProcessPoolExecutor(args.jobs) as ex:
+                with ProcessPoolExecutor(jobs) as ex:
                     reps = diagnose_many(records, executor=ex, progress=False, **options)
             else:
                 reps = diagnose_many(records, progress=not args.quiet, **options)

@@ -26,7 +26,9 @@ def diagnose_many(records, executor=None, **options):
         after the other.
     **options
         Keyword arguments of :func:`~hystcomp.diagnose.diagnose` (e.g.
-        ``effects``, ``validation``, ``progress``).
+        ``effects``, ``validation``, ``progress``).  With an executor,
+        ``workers`` is 1 unless given: the records already run side by
+        side.
 
     Returns
     -------
@@ -40,6 +42,8 @@ def diagnose_many(records, executor=None, **options):
     >>> [d.effects for d in diagnose_many(recs, effects=["drift"], progress=False)]
     [['drift'], []]
     """
+    if executor is not None:
+        options.setdefault("workers", 1)
     jobs = []
     for i, rec in enumerate(records):
         try:
