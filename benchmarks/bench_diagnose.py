@@ -15,7 +15,9 @@ blocks spread over the record, round 9), the slowest case.
 
 ``--workers`` (default ``1 2``): the diagnosis is timed with each number of
 threads fitting a step's candidates (``diagnose(..., workers=...)``),
-alternately; the answers must be the same.
+alternately; the answers must be the same.  ``diagnose``'s default
+(``workers=None``) is :func:`hystcomp.diagnose.default_workers`, printed
+with the figures: 2 on this 2-core machine (round 24).
 
 Run: ``python benchmarks/bench_diagnose.py [--effect drift] [--turning-drift] [--repeats 2] [--workers 1 2]``
 """
@@ -28,7 +30,7 @@ import warnings
 import numpy as np
 
 from hystcomp.datasets import hidden_effect_data
-from hystcomp.diagnose import ALL, diagnose
+from hystcomp.diagnose import ALL, default_workers, diagnose
 from hystcomp.identify import fit_weights
 
 TARGET = 10.0
@@ -75,6 +77,7 @@ def main(argv=None):
         print(f"diagnose, all {len(ALL)} candidate effects, workers={w}:        {best:8.2f} s  "
               f"(= {best / t_base:.0f} plain fits; target <= {TARGET:.0f} s: {verdict}; "
               f"{rep.n_evaluations} inner solves)")
+    print(f"diagnose's default (workers=None) on this machine: workers={default_workers()}")
     answers = {(tuple(r.effects), r.verdict, r.rms_after, r.n_evaluations) for r in reps.values()}
     print("the same answer with every number of workers: " + ("yes" if len(answers) == 1 else "NO"))
     rep = reps[args.workers[0]]
