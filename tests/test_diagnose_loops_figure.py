@@ -48,3 +48,43 @@ def test_reversals_of_a_sine_are_its_extremes(tol):
     v = 10.0 * np.sin(2 * np.pi * t)
     r = reversals(v, tol)
     np.testing.assert_allclose(t[r], [0.25, 0.75, 1.25, 1.75, 2.25, 2.75], atol=1.5e-3)
+
+
+def test_rate_panel_keeps_its_samples_readable_past_a_step():
+    # a step in the input (one sample at 40,000 V/s, as at 3.26 s of the measured piezo record)
+    # would squeeze every other sample into one column of the rate panel: its axis holds the
+    # middle 99.8 % of the samples and its label counts those beyond
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from hystcomp.diagnose import diagnose
+
+    dt = 1e-3
+    t = np.arange(20000) * dt
+    v = 40.0 * np.sin(2 * np.pi * 0.5 * t) * np.minimum(t / 2.0, 1.0)
+    v[t >= 12.0] += 20.0                        # one step of 20 V in one sample: 20,000 V/s
+    y = me.play_core(v, 60.0) + 0.03 * np.random.default_rng(5).standard_normal(t.size)
+    rep = diagnose(t, v, y, effects=["drift"], progress=False, workers=1)
+    ax = rep.plots()["signatures"].axes[2]
+    lo, hi = ax.get_xlim()
+    assert hi < 1000.0 and lo > -1000.0          # the sine's rates: up to 2 pi 0.5 40 = 126 V/s
+    assert hi > 126.0 and lo < -126.0
+    beyond = int(ax.get_xlabel().split("; ")[1].split()[0])
+    assert ax.get_xlabel().endswith("samples beyond the axis") and 1 <= beyond <= 40     # 0.2 % of 20,000
+
+
+def test_rate_panel_without_a_step_shows_every_sample():
+    import matplotlib
+
+    matplotlib.use("Agg")
+    from hystcomp.diagnose import diagnose
+
+    t = np.arange(20000) * 1e-3
+    v = 40.0 * np.sin(2 * np.pi * 0.5 * t) * np.minimum(t / 2.0, 1.0)
+    y = me.play_core(v, 60.0) + 0.03 * np.random.default_rng(6).standard_normal(t.size)
+    rep = diagnose(t, v, y, effects=["drift"], progress=False, workers=1)
+    ax = rep.plots()["signatures"].axes[2]
+    x = np.concatenate([ln.get_xdata() for ln in ax.lines])
+    lo, hi = ax.get_xlim()
+    assert lo <= x.min() and x.max() <= hi
+    assert "beyond" not in ax.get_xlabel()

@@ -76,6 +76,29 @@ def reversals(v, tol):
     return np.asarray(out, dtype=int)
 
 
+def _rate_limits(rate, keep=0.998):
+    """Limits of the rate axis that hold the middle `keep` of the samples
+    (padded by a tenth of that range), and how many samples fall beyond
+    them; (None, None, 0) when the whole range is no wider than twice that.
+
+    Examples
+    --------
+    >>> rate = np.r_[np.sin(np.linspace(0, 20, 10000)), -400.0]
+    >>> lo, hi, beyond = _rate_limits(rate)
+    >>> round(lo, 2), round(hi, 2), beyond
+    (-1.2, 1.2, 1)
+    >>> _rate_limits(np.sin(np.linspace(0, 20, 1000)))
+    (None, None, 0)
+    """
+    rate = np.asarray(rate, dtype=np.float64)
+    a, b = np.quantile(rate, [(1 - keep) / 2, (1 + keep) / 2])
+    pad = 0.1 * (b - a) if b > a else 1.0
+    lo, hi = float(a - pad), float(b + pad)
+    if rate.min() >= lo - (hi - lo) and rate.max() <= hi + (hi - lo):
+        return None, None, 0
+    return lo, hi, int(np.count_nonzero((rate < lo) | (rate > hi)))
+
+
 def _mark_held_out(ax, xax, rec):
     """Dashed lines at each held-out block's start (and end, inside the
     record), the blocks shaded in light orange."""
@@ -401,7 +424,14 @@ class Diagnosis:
         ax[1].legend(fontsize=7, loc="best", framealpha=0.6)
         if rec.dt is not None:
             ax[2].plot(rec.rate[idx], e0[idx], ".", ms=1.5)
-            ax[2].set(xlabel=f"input rate dv/dt [{iu}/s]", ylabel=f"residual [{ou}]",
+            lo, hi, beyond = _rate_limits(rec.rate)
+            note = ""
+            if beyond:
+                # a step in the input (one sample at thousands of V/s) would squeeze the
+                # other samples into one column: the axis keeps 99.8 % of them
+                ax[2].set_xlim(lo, hi)
+                note = f"; {beyond} samples beyond the axis"
+            ax[2].set(xlabel=f"input rate dv/dt [{iu}/s]{note}", ylabel=f"residual [{ou}]",
                       title="against rate (rate dependence, delay)")
         else:
             ax[2].text(0.5, 0.5, "no time axis: rate untested", ha="center", transform=ax[2].transAxes)
