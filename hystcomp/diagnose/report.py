@@ -378,7 +378,9 @@ class Diagnosis:
     # -- figures
     def plots(self, input_unit="input units", output_unit="output units"):
         """Figures: ``signatures`` (the base residual in time, against the
-        input and against the rate, the noise floor drawn), ``loops``
+        input and against the rate, the noise floor drawn; the rate axis
+        holds the middle 99.8 % of the samples when a step in the input
+        would squeeze the rest, and its label counts those beyond), ``loops``
         (held-out loops of the base and final model, every n-th cycle on long
         records), ``gap`` (the residual before and after each step with the
         noise floor).
