@@ -14,10 +14,12 @@ unexplained, so the diagnosis runs its search twice (re-judged on held-out
 blocks spread over the record, round 9), the slowest case.
 
 ``--workers`` (default ``1 2``): the diagnosis is timed with each number of
-threads fitting a step's candidates (``diagnose(..., workers=...)``),
-alternately; the answers must be the same.  ``diagnose``'s default
-(``workers=None``) is :func:`hystcomp.diagnose.default_workers`, printed
-with the figures: 2 on this 2-core machine (round 24).
+workers fitting a step's candidates (``diagnose(..., workers=...)``),
+alternately; more than one is timed twice, in forked processes (the default
+where :func:`hystcomp.identify.parallel_fits.can_fork`, since round 25) and
+on threads (round 24's way).  The answers must be the same.  ``diagnose``'s
+default (``workers=None``) is :func:`hystcomp.diagnose.default_workers`,
+printed with the figures: 2 on this 2-core machine.
 
 Run: ``python benchmarks/bench_diagnose.py [--effect drift] [--turning-drift] [--repeats 2] [--workers 1 2]``
 """
@@ -42,7 +44,8 @@ def main(argv=None):
     ap.add_argument("--seed", type=int, default=0)
     ap.add_argument("--repeats", type=int, default=1)
     ap.add_argument("--workers", type=int, nargs="+", default=[1, 2],
-                    help="threads fitting a step's candidates (each timed; default 1 and 2)")
+                    help="workers fitting a step's candidates (each timed; more than one in processes and on "
+                         "threads; default 1 and 2)")
     ap.add_argument("--turning-drift", action="store_true",
                     help="add an offset that rises and falls back (the search runs twice)")
     args = ap.parse_args(argv)
@@ -64,23 +67,42 @@ def main(argv=None):
         fit_weights(d.v, d.y, model="pi", validation=mask)
     t_base = time.perf_counter() - t0
 
-    times, reps = {w: [] for w in args.workers}, {}
-    for _ in range(args.repeats):
-        for w in args.workers:      # alternately, so that a change in the load hits both
-            t0 = time.perf_counter()
-            reps[w] = diagnose(d.t, d.v, d.y, progress=True, workers=w)
-            times[w].append(time.perf_counter() - t0)
-    print(f"\nbaseline: one plain PI fit (fit_weights, 20 thresholds): {t_base:8.2f} s")
+    from hystcomp.identify import parallel_fits
+
+    forkable = parallel_fits.can_fork()
+    runs = []
     for w in args.workers:
-        best, rep = min(times[w]), reps[w]
+        if w == 1:
+            runs.append((w, None, f"workers={w}"))
+        else:
+            if forkable:
+                runs.append((w, True, f"workers={w}, processes"))
+            runs.append((w, False, f"workers={w}, threads"))
+    times, reps = {r: [] for r in runs}, {}
+    real = parallel_fits.can_fork
+    for _ in range(args.repeats):
+        for run in runs:      # alternately, so that a change in the load hits every way
+            w, processes, _ = run
+            parallel_fits.can_fork = real if processes is None else (lambda p=processes: p)
+            try:
+                t0 = time.perf_counter()
+                reps[run] = diagnose(d.t, d.v, d.y, progress=True, workers=w)
+                times[run].append(time.perf_counter() - t0)
+            finally:
+                parallel_fits.can_fork = real
+    print(f"\nbaseline: one plain PI fit (fit_weights, 20 thresholds): {t_base:8.2f} s")
+    for run in runs:
+        best, rep = min(times[run]), reps[run]
         verdict = "PASS" if best <= TARGET else "FAIL"
-        print(f"diagnose, all {len(ALL)} candidate effects, workers={w}:        {best:8.2f} s  "
+        each = ", ".join(f"{x:.2f}" for x in times[run])
+        print(f"diagnose, all {len(ALL)} candidate effects, {run[2]:22s} {best:6.2f} s  "
               f"(= {best / t_base:.0f} plain fits; target <= {TARGET:.0f} s: {verdict}; "
-              f"{rep.n_evaluations} inner solves)")
-    print(f"diagnose's default (workers=None) on this machine: workers={default_workers()}")
+              f"{rep.n_evaluations} inner solves; runs {each})")
+    print(f"diagnose's default (workers=None) on this machine: workers={default_workers()}"
+          + (", in processes" if forkable and default_workers() > 1 else ""))
     answers = {(tuple(r.effects), r.verdict, r.rms_after, r.n_evaluations) for r in reps.values()}
-    print("the same answer with every number of workers: " + ("yes" if len(answers) == 1 else "NO"))
-    rep = reps[args.workers[0]]
+    print("the same answer with every number and kind of workers: " + ("yes" if len(answers) == 1 else "NO"))
+    rep = reps[runs[0]]
     if getattr(rep, "other_split", None) is not None:
         print(f"re-judged on held-out blocks ({'taken' if rep.other_split['held_out'] != 'blocks' else 'not taken'}): "
               "two searches")

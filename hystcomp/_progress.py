@@ -49,10 +49,23 @@ def progress_bar(iterable=None, total=None, desc=None, enabled=True, file=None, 
     isatty = getattr(stream, "isatty", None)
     if not enabled or (isatty is not None and not isatty()):   # tqdm's disable=None rule
         return _SilentBar(iterable)
-    from tqdm import tqdm
+    return _bar_class()(iterable, total=total, desc=desc, file=stream,
+                        disable=None if enabled else True, unit=unit, dynamic_ncols=True)
 
-    return tqdm(iterable, total=total, desc=desc, file=stream,
-                disable=None if enabled else True, unit=unit, dynamic_ncols=True)
+
+_BAR = []
+
+
+def _bar_class():
+    """tqdm without its monitor thread (``monitor_interval = 0``): the bars
+    here are updated often, and a process with no thread but its own may
+    fork the diagnosis's candidate fits
+    (:func:`hystcomp.identify.parallel_fits.can_fork`)."""
+    if not _BAR:
+        from tqdm import tqdm
+
+        _BAR.append(type("Bar", (tqdm,), {"monitor_interval": 0}))
+    return _BAR[0]
 
 
 class _SilentBar:

@@ -55,6 +55,20 @@ def test_progress_bar_shows_on_a_terminal_only():
     assert pipe.getvalue() == "" and quiet.getvalue() == ""
 
 
+def test_a_bar_starts_no_monitor_thread():
+    # tqdm's monitor thread would keep the diagnosis from forking its candidate fits
+    # (hystcomp.identify.parallel_fits.can_fork asks for a process with no other thread)
+    import threading
+
+    before = threading.active_count()
+    bar = progress_bar(total=3, desc="x", file=_Terminal())
+    assert not bar.disable
+    bar.update()
+    assert threading.active_count() == before
+    assert getattr(type(bar), "monitor", None) is None
+    bar.close()
+
+
 def _demo_args(out, *extra):
     p = argparse.ArgumentParser()
     demo.add_arguments(p)

@@ -1,5 +1,7 @@
-"""``diagnose(..., workers=2)``: a step's candidate fits (and a pair step's) on two threads give
-the same diagnosis as one thread, report for report (JSON without the timings), solve for solve.
+"""``diagnose(..., workers=2)``: a step's candidate fits (and a pair step's) on two threads, or in
+two forked processes (the default where :func:`hystcomp.identify.parallel_fits.can_fork`, since
+round 25), give the same diagnosis as one thread, report for report (JSON without the timings),
+solve for solve.
 The default, ``workers=None``, is :func:`hystcomp.diagnose.default_workers` (2 on two or more
 cores, since round 24); :func:`diagnose_many` on an executor fits one thread a record.
 
@@ -12,13 +14,17 @@ alone.
 
 import argparse
 import json
+import multiprocessing
+import sys
+import threading
+import warnings
 
 import numpy as np
 import pytest
 
 from hystcomp import diagnose as dg
 from hystcomp.datasets import hidden_effect_data
-from hystcomp.identify.search import optimise_all
+from hystcomp.identify.parallel_fits import optimise_all
 
 
 def _timeless(d):
@@ -35,8 +41,11 @@ def turning():
     return d.t, d.v, d.y + 0.04 * np.ptp(d.y) * np.sin(np.pi * d.t / (1.3 * d.t[-1])) ** 2
 
 
-def test_two_threads_give_the_same_diagnosis(turning):
+def test_two_threads_give_the_same_diagnosis(turning, monkeypatch):
+    from hystcomp.identify import parallel_fits
+
     one = dg.diagnose(*turning, progress=False, workers=1)
+    monkeypatch.setattr(parallel_fits, "can_fork", lambda: False)     # threads
     two = dg.diagnose(*turning, progress=False, workers=2)
     # the paths the threads serve ran: two searches, pair steps in the first
     assert one.other_split is not None
@@ -125,13 +134,17 @@ def test_diagnose_many_on_an_executor_uses_one_thread_a_record():
 
 
 class _Engine:
-    """A stand-in for VariableProjection: optimise() sleeps a little (so that two threads
-    finish out of order) and fails as a fit may."""
+    """A stand-in for VariableProjection: optimise() sleeps a little (so that two workers
+    finish out of order), counts one inner solve and fails as a fit may."""
+
+    def __init__(self):
+        self.n_evaluations = 0
 
     def optimise(self, structure, delay=0.0):
         import time
 
         time.sleep(delay)
+        self.n_evaluations += 1
         if structure == "unsolvable":
             raise np.linalg.LinAlgError("singular")
         if structure == "bug":
@@ -139,15 +152,67 @@ class _Engine:
         return structure
 
 
+_FORKABLE = sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
+_KINDS = [False] + ([True] if _FORKABLE else [])
+
+
+@pytest.mark.parametrize("processes", _KINDS)
 @pytest.mark.parametrize("workers", [1, 2, 3])
-def test_optimise_all_keeps_the_order_and_returns_fit_errors(workers):
+def test_optimise_all_keeps_the_order_and_returns_fit_errors(workers, processes):
     jobs = [("a", {"delay": 0.05}), ("unsolvable", {}), ("b", {"delay": 0.0}), ("c", {"delay": 0.02})]
-    out = list(optimise_all(_Engine(), jobs, workers))
-    assert out[0] == "a" and out[2:] == ["b", "c"]
-    assert isinstance(out[1], np.linalg.LinAlgError)
-    # an error that is not a fit's propagates
-    with pytest.raises(KeyError):
-        list(optimise_all(_Engine(), [("a", {}), ("bug", {})], workers))
+    engine = _Engine()
+    with warnings.catch_warnings():
+        # Python >= 3.12 warns when a process with threads forks (pytest-xdist's worker has one)
+        warnings.simplefilter("ignore", DeprecationWarning)
+        out = list(optimise_all(engine, jobs, workers, processes=processes))
+        assert out[0] == "a" and out[2:] == ["b", "c"]
+        assert isinstance(out[1], np.linalg.LinAlgError)
+        # the solves of forked children are counted here too
+        assert engine.n_evaluations == 4
+        # an error that is not a fit's propagates
+        with pytest.raises(KeyError):
+            list(optimise_all(_Engine(), [("a", {}), ("bug", {})], workers, processes=processes))
+
+
+def test_can_fork_only_without_other_threads(monkeypatch):
+    from hystcomp.identify import parallel_fits
+
+    monkeypatch.setattr(threading, "active_count", lambda: 1)
+    assert parallel_fits.can_fork() == _FORKABLE
+    monkeypatch.setattr(threading, "active_count", lambda: 2)
+    assert parallel_fits.can_fork() is False
+    monkeypatch.setattr(threading, "active_count", lambda: 1)
+    monkeypatch.setattr(sys, "platform", "darwin")
+    assert parallel_fits.can_fork() is False
+    with pytest.raises(ValueError, match=r"Parameter processes is True but this platform \(darwin\) cannot fork"):
+        optimise_all(_Engine(), [("a", {})], 2, processes=True)
+
+
+def test_forked_fits_give_the_diagnosis_of_one_thread(turning, monkeypatch):
+    """The same record as above, its candidate fits forced into forked processes."""
+    if not _FORKABLE:
+        pytest.skip("this platform cannot fork")
+    from hystcomp.identify import parallel_fits
+
+    real = parallel_fits.optimise_all
+    kinds = []
+
+    def forked(vp, jobs, workers=1, processes=None):
+        kinds.append(workers)
+        return real(vp, jobs, workers, processes=True)
+
+    from hystcomp.diagnose import search
+
+    one = dg.diagnose(*turning, progress=False, workers=1)
+    monkeypatch.setattr(search, "optimise_all", forked)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        two = dg.diagnose(*turning, progress=False, workers=2)
+    assert kinds and set(kinds) == {2}
+    assert one.n_evaluations == two.n_evaluations
+    assert json.dumps(_timeless(one.to_dict()), sort_keys=True, default=str) == \
+        json.dumps(_timeless(two.to_dict()), sort_keys=True, default=str)
+    np.testing.assert_array_equal(one.model.simulate(turning[1]), two.model.simulate(turning[1]))
 
 
 def test_cli_without_jobs_uses_the_default_workers(tmp_path, monkeypatch, capsys):
@@ -172,3 +237,83 @@ def test_cli_jobs_with_one_file_threads_the_candidates(turning, tmp_path, capsys
         outs.append(_timeless(json.loads(capsys.readouterr().out)))
     assert outs[0] == outs[1]
     assert outs[0]["effects"] == ["drift", "creep"]
+
+
+class _Sleeper:
+    """An engine whose fits sleep and leave a file each when they start (in whatever process)."""
+
+    def __init__(self, where):
+        self.where = where
+        self.n_evaluations = 0
+
+    def optimise(self, structure, delay=0.0):
+        import time
+
+        (self.where / f"started_{structure}").touch()
+        time.sleep(delay)
+        return structure
+
+
+@pytest.mark.skipif(not _FORKABLE, reason="this platform cannot fork")
+def test_fits_not_started_are_dropped_when_the_caller_stops(tmp_path):
+    # sixteen fits of 0.2 s in two processes; the caller takes the first and stops (as on
+    # Ctrl-C): the fits not yet handed to the children are cancelled, those handed end
+    jobs = [(str(i), {"delay": 0.2}) for i in range(16)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        fits = optimise_all(_Sleeper(tmp_path), jobs, 2, processes=True)
+        assert next(fits) == "0"
+        fits.close()
+    started = sorted(p.name for p in tmp_path.iterdir())
+    # handed to the children: two under way and the executor's call queue (workers + 1) when
+    # the caller stopped, and the two or so that moved up while it shut the executor down
+    assert 2 <= len(started) <= 9, started
+
+
+def _children(pid):
+    """Process ids whose parent is `pid` (Linux /proc)."""
+    import os
+
+    out = []
+    for d in os.listdir("/proc"):
+        if d.isdigit():
+            try:
+                with open(f"/proc/{d}/stat") as f:
+                    fields = f.read().rsplit(")", 1)[1].split()
+            except OSError:
+                continue
+            if int(fields[1]) == pid:
+                out.append(int(d))
+    return out
+
+
+@pytest.mark.skipif(not _FORKABLE, reason="this platform cannot fork")
+def test_ctrl_c_while_children_fit_ends_with_one_line(tmp_path):
+    import os
+    import signal
+    import subprocess
+    import time
+
+    d = hidden_effect_data("creep", seed=0, dt=2e-3)
+    path = tmp_path / "creep.csv"
+    np.savetxt(path, np.column_stack([d.t, d.v, d.y]), delimiter=",", header="t,v,y", comments="")
+    proc = subprocess.Popen([sys.executable, "-m", "hystcomp", "diagnose", str(path), "--quiet"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+                            preexec_fn=lambda: (signal.signal(signal.SIGINT, signal.SIG_DFL), os.setpgrp()))
+    try:
+        kids = []
+        for _ in range(1200):           # until the first step's children are fitting (at most 120 s)
+            kids = _children(proc.pid)
+            if len(kids) >= 2 or proc.poll() is not None:
+                break
+            time.sleep(0.1)
+        assert len(kids) >= 2, "the diagnosis ended before it forked"
+        os.killpg(proc.pid, signal.SIGINT)        # Ctrl-C reaches the whole process group
+        _, err = proc.communicate(timeout=120)
+    finally:
+        if proc.poll() is None:
+            proc.kill()
+    assert proc.returncode == 130
+    assert err.strip().splitlines()[-1] == "hystcomp diagnose: interrupted"
+    assert "Traceback" not in err
+    assert not any(os.path.exists(f"/proc/{k}") and _children(proc.pid) for k in kids)

@@ -59,11 +59,13 @@ ALL = EFFECTS
 
 
 def default_workers():
-    """The threads :func:`diagnose` fits a step's candidates on when
+    """The workers :func:`diagnose` fits a step's candidates with when
     ``workers`` is None: 2 when this process may run on two or more cores
-    (its CPU affinity, else ``os.cpu_count()``), else 1.  Two, not more:
-    the search's Python code holds the GIL, so a third thread gains little
-    (two take about three quarters of one's time, round 23).
+    (its CPU affinity, else ``os.cpu_count()``), else 1.  Two, not more: a
+    step has 3-17 candidates of uneven cost, and on threads the search's
+    Python code holds the GIL (two threads take about three quarters of
+    one's time; two forked processes, the default where
+    :func:`hystcomp.identify.parallel_fits.can_fork`, about two thirds).
 
     Examples
     --------
@@ -139,11 +141,14 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         names a drift or gain drift and leaves fewer noise floors
         (:attr:`Diagnosis.other_split` has the other split's verdict).
     workers : int or None
-        Threads that fit a step's candidate effects side by side.  None
-        (the default): :func:`default_workers`, 2 when this process may run
-        on two or more cores, else 1.  The diagnosis is the same with any
-        number; with 2 on two cores it takes about three quarters of the
-        time (``benchmarks/bench_diagnose.py --workers 1 2``).  Pass 1 when
+        Candidate fits of a step run side by side: in forked processes
+        where :func:`hystcomp.identify.parallel_fits.can_fork` (Linux, a
+        process with no other thread), else on threads.  None (the
+        default): :func:`default_workers`, 2 when this process may run on
+        two or more cores, else 1.  The diagnosis is the same with any
+        number and either kind; with 2 on two cores it takes about two
+        thirds of the time in processes, three quarters on threads
+        (``benchmarks/bench_diagnose.py --workers 1 2``).  Pass 1 when
         several records are diagnosed in parallel processes already
         (:func:`diagnose_many` with an executor does).
 

@@ -279,8 +279,9 @@ def add_arguments(parser):
                         help="CSV file(s) with a header row; several files are diagnosed independently")
     parser.add_argument("--jobs", type=int, default=None,
                         help="diagnose several files on this many processes (default one after the other); "
-                             "with one file, fit each step's candidate effects on this many threads (the same "
-                             "diagnosis; default 2 on a machine with two or more cores, else 1)")
+                             "with one file, fit each step's candidate effects with this many workers (forked processes "
+                             "on Linux, else threads; the same diagnosis; default 2 on a machine with two or "
+                             "more cores, else 1)")
     parser.add_argument("--time", default="t", help="time column [s] (default t)")
     parser.add_argument("--no-time", action="store_true",
                         help="the record has no time axis (a quasi-static point sequence such as a B-H "

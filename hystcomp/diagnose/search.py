@@ -6,7 +6,8 @@ import time
 import numpy as np
 
 from ..identify.parts import PARTS
-from ..identify.search import FIT_ERRORS, PartsModel, Structure, optimise_all
+from ..identify.parallel_fits import optimise_all
+from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .off_centre import off_centre_test
@@ -264,7 +265,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 free.add(st.output_part().kind)
                 k_new += len(st.output_part().parameters(ctx, kinds))
             jobs.append((part, st, dict(start=start, free=free, max_evaluations=12 * k_new, starts=starts)))
-        # the candidates' fits, in the order above (on `workers` threads: the same fits)
+        # the candidates' fits, in the order above (`workers` side by side: the same fits)
         for (part, st, _), pt in zip(jobs, optimise_all(vp, [(st, job) for _, st, job in jobs], workers)):
             if isinstance(pt, Exception):
                 say(f"step {len(chosen) + 1}: {part.kind}: failed ({pt})")

@@ -20,6 +20,8 @@ The package is split by concern:
   inequality constraints, penalties) that every front end calls;
 * :mod:`~hystcomp.identify.search`: variable projection over the nonlinear
   parameters of a set of parts;
+* :mod:`~hystcomp.identify.parallel_fits`: several such searches side by
+  side (forked processes on Linux, threads elsewhere);
 * front ends: :func:`fit_weights` (weights for given thresholds and envelope,
   Gram matrix accumulated block by block), :func:`fit` (envelope parameters by
   variable projection), :class:`HysteresisRegressor` (scikit-learn style),

@@ -567,47 +567,6 @@ class VariableProjection:
 FIT_ERRORS = (ValueError, np.linalg.LinAlgError, FloatingPointError)
 
 
-def optimise_all(vp, jobs, workers=1):
-    """:meth:`VariableProjection.optimise` for several candidates, in order.
-
-    Parameters
-    ----------
-    vp : VariableProjection
-    jobs : list of (Structure, dict)
-        Each candidate's structure and the keyword arguments of
-        :meth:`~VariableProjection.optimise` (``start``, ``free``,
-        ``max_evaluations``, ``starts``).
-    workers : int
-        Threads that fit candidates side by side (1: one after another, in
-        this thread).  Each fit is the same computation either way (the
-        memo caches hold arrays computed from their keys alone), so the
-        results are identical.  The compiled kernels and the BLAS release
-        the GIL; the search's Python code holds it, so two threads on two
-        cores take about three quarters of the time of one (round 23).
-
-    Returns
-    -------
-    iterator
-        One :class:`FitPoint` per job, in the jobs' order, as each is ready
-        (or the :data:`FIT_ERRORS` exception it ended with).
-    """
-    def fit(job):
-        structure, kw = job
-        try:
-            return vp.optimise(structure, **kw)
-        except FIT_ERRORS as exc:
-            return exc
-
-    if workers <= 1 or len(jobs) < 2:
-        return map(fit, jobs)
-    from concurrent.futures import ThreadPoolExecutor
-
-    def ordered():
-        with ThreadPoolExecutor(min(workers, len(jobs))) as ex:
-            yield from ex.map(fit, jobs)
-    return ordered()
-
-
 #: a parameter within this share of its bounds' width from an edge is at the edge
 EDGE = 0.01
 
