@@ -316,4 +316,5 @@ def test_ctrl_c_while_children_fit_ends_with_one_line(tmp_path):
     assert proc.returncode == 130
     assert err.strip().splitlines()[-1] == "hystcomp diagnose: interrupted"
     assert "Traceback" not in err
-    assert not any(os.path.exists(f"/proc/{k}") and _children(proc.pid) for k in kids)
+    # the children ended with the parent (it waits for them), none left running on its own
+    assert not [k for k in kids if os.path.exists(f"/proc/{k}")]

@@ -63,9 +63,9 @@ def default_workers():
     ``workers`` is None: 2 when this process may run on two or more cores
     (its CPU affinity, else ``os.cpu_count()``), else 1.  Two, not more: a
     step has 3-17 candidates of uneven cost, and on threads the search's
-    Python code holds the GIL (two threads take about three quarters of
-    one's time; two forked processes, the default where
-    :func:`hystcomp.identify.parallel_fits.can_fork`, about two thirds).
+    Python code holds the GIL (on the benchmark's record searched twice
+    two threads took 0.82 of one's time; two forked processes, the default
+    where :func:`hystcomp.identify.parallel_fits.can_fork`, 0.65).
 
     Examples
     --------
@@ -146,9 +146,9 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         process with no other thread), else on threads.  None (the
         default): :func:`default_workers`, 2 when this process may run on
         two or more cores, else 1.  The diagnosis is the same with any
-        number and either kind; with 2 on two cores it takes about two
-        thirds of the time in processes, three quarters on threads
-        (``benchmarks/bench_diagnose.py --workers 1 2``).  Pass 1 when
+        number and either kind; with 2 on two cores the benchmark's record
+        searched twice took 0.65 of one worker's time in processes, 0.82
+        on threads (``benchmarks/bench_diagnose.py --workers 1 2``).  Pass 1 when
         several records are diagnosed in parallel processes already
         (:func:`diagnose_many` with an executor does).
 

@@ -6,9 +6,9 @@ variable-projection search each); the fits are independent.  They run in
 forked processes where that is safe (Linux, a process that runs no other
 thread: :func:`can_fork`), else on threads.
 
-Processes, because the search's Python code holds the GIL: on two cores two
-threads took 0.8-0.9 of one thread's time on the benchmark's record
-searched twice, two forked processes 0.65-0.75 (round 25,
+Processes, because the search's Python code holds the GIL: on two cores, on
+the benchmark's record searched twice, two threads took 0.82 of one
+worker's time, two forked processes 0.65 (best against best, round 25,
 ``benchmarks/bench_diagnose.py``).  A forked child starts with the parent's
 memory (the record, its memo caches), so nothing is copied in; it sends back
 the fit (a :class:`~hystcomp.identify.search.FitPoint`) and its count of
