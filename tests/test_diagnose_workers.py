@@ -318,3 +318,47 @@ def test_ctrl_c_while_children_fit_ends_with_one_line(tmp_path):
     assert "Traceback" not in err
     # the children ended with the parent (it waits for them), none left running on its own
     assert not [k for k in kids if os.path.exists(f"/proc/{k}")]
+
+
+class _Dying(_Engine):
+    """An engine whose fit of "die" kills the forked child that makes it (and only a child)."""
+
+    def __init__(self):
+        import os
+
+        super().__init__()
+        self.parent = os.getpid()
+
+    def optimise(self, structure, delay=0.0):
+        import os
+
+        if structure == "die" and os.getpid() != self.parent:
+            os._exit(1)
+        return super().optimise(structure, delay)
+
+
+@pytest.mark.skipif(not _FORKABLE, reason="this platform cannot fork")
+def test_a_child_that_dies_leaves_its_fits_to_this_process():
+    jobs = [("a", {}), ("die", {"delay": 0.05}), ("b", {}), ("c", {})]
+    engine = _Dying()
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        with pytest.warns(RuntimeWarning, match=r"a forked candidate fit ended abnormally .* made in this process"):
+            out = list(optimise_all(engine, jobs, 2, processes=True))
+    # every fit, in order; the ones after the dead child's were made here
+    assert out == ["a", "die", "b", "c"]
+
+
+@pytest.mark.skipif(not _FORKABLE, reason="this platform cannot fork")
+def test_without_a_process_pool_the_fits_run_on_threads(monkeypatch):
+    # a container without /dev/shm: multiprocessing cannot make the pool's locks
+    import concurrent.futures
+
+    def no_pool(*args, **kwargs):
+        raise OSError(38, "Function not implemented")
+
+    monkeypatch.setattr(concurrent.futures, "ProcessPoolExecutor", no_pool)
+    engine = _Engine()
+    out = list(optimise_all(engine, [("a", {"delay": 0.02}), ("unsolvable", {}), ("b", {})], 2, processes=True))
+    assert out[0] == "a" and out[2] == "b" and isinstance(out[1], np.linalg.LinAlgError)
+    assert engine.n_evaluations == 3

@@ -134,18 +134,38 @@ def _quiet_child():
 
 
 def _in_processes(vp, jobs, n):
+    """The fits in `n` forked children, in order.  Where no process pool can
+    be made (no working ``sem_open``: a container without ``/dev/shm``) the
+    fits run on threads; where a child dies (killed for memory, say) the
+    fits not yet received are made here, one after another, with a
+    warning: the same results either way."""
     global _FORKED
     from concurrent.futures import ProcessPoolExecutor
+    from concurrent.futures.process import BrokenProcessPool
 
-    _FORKED = (vp, jobs)
-    # the children are forked at the first submit (all of them, before the
-    # executor starts its own thread), so they inherit _FORKED
-    ex = ProcessPoolExecutor(n, mp_context=multiprocessing.get_context("fork"), initializer=_quiet_child)
     try:
-        for out, solves in ex.map(_fit_forked, range(len(jobs))):
-            with _LOCK:
-                vp.n_evaluations += solves
-            yield out
+        ex = ProcessPoolExecutor(n, mp_context=multiprocessing.get_context("fork"), initializer=_quiet_child)
+    except (OSError, ImportError, NotImplementedError):
+        yield from optimise_all(vp, jobs, n, processes=False)
+        return
+    _FORKED = (vp, jobs)
+    done = 0
+    try:
+        # the children are forked at the first submit (all of them, before the
+        # executor starts its own thread), so they inherit _FORKED
+        try:
+            for out, solves in ex.map(_fit_forked, range(len(jobs))):
+                with _LOCK:
+                    vp.n_evaluations += solves
+                done += 1
+                yield out
+        except BrokenProcessPool as exc:
+            import warnings
+
+            warnings.warn(f"a forked candidate fit ended abnormally ({exc}); the {len(jobs) - done} fits left "
+                          "are made in this process", RuntimeWarning, stacklevel=2)
+            for job in jobs[done:]:
+                yield _fit(vp, job)
     finally:
         # on Ctrl-C (or an error) the fits not started are dropped; those under
         # way end first (one fit each)
