@@ -43,8 +43,14 @@ def can_fork():
     >>> can_fork() in (True, False)
     True
     """
-    return (sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
-            and threading.active_count() == 1 and not multiprocessing.current_process().daemon)
+    return (_platform_forks() and threading.active_count() == 1
+            and not multiprocessing.current_process().daemon)
+
+
+def _platform_forks():
+    """Linux with the ``fork`` start method (macOS's fork is unsafe with its
+    system libraries; Windows has none)."""
+    return sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()
 
 
 def _fit(vp, job):
@@ -107,7 +113,7 @@ def optimise_all(vp, jobs, workers=1, processes=None):
     >>> [round(pt.rss, 6) for pt in optimise_all(vp, jobs, workers=2)]
     [0.0, 0.0]
     """
-    if processes and not (sys.platform.startswith("linux") and "fork" in multiprocessing.get_all_start_methods()):
+    if processes and not _platform_forks():
         raise ValueError(f"Parameter processes is {processes!r} but this platform ({sys.platform}) cannot fork; "
                          "pass None or False (threads)")
     if workers <= 1 or len(jobs) < 2:
