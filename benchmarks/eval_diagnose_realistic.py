@@ -25,8 +25,9 @@ HOLDOUT19 was run once for the twenty-first round's measurement (24 of 30 right)
 HOLDOUT20 was run once for the twenty-second round's measurement (25 of 30 right) and is part of ALL since.
 HOLDOUT21 was run once for the twenty-fourth round's measurement (23 of 30 right) and is part of ALL since.
 HOLDOUT22 was run once for the twenty-fifth round's measurement (20 of 30 right) and is part of ALL since.
+HOLDOUT23 was run once for the twenty-sixth round's measurement (26 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout21|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout23|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 

@@ -4,7 +4,7 @@ Marked ``slow`` (about 1,200 CPU-seconds, 10 minutes on two cores): it runs with
 ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-22 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-23 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 644/735 (87.6 %) over the twenty-three sets in round 25
-# (the twenty-two earlier sets 624/705, 88.5 %, as in round 24: rounds 23-25 changed no decision;
-# HOLDOUT22 20/30 when fresh), so it stays open. At seed 0, as run here, 216/245 (88.2 %), 220.5
+# The issue's criterion is over three seeds: 670/765 (87.6 %) over the twenty-four sets in round 26
+# (the twenty-three earlier sets 644/735, 87.6 %, as in round 25: rounds 23-26 changed no decision;
+# HOLDOUT23 26/30 when fresh), so it stays open. At seed 0, as run here, 225/255 (88.2 %), 229.5
 # needed, so this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a decision
 # that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -59,20 +59,20 @@ def test_no_crash(rows):
 # (HOLDOUT5), 21/30 (HOLDOUT6), 22/30 (HOLDOUT7), 18/30 (HOLDOUT8), 24/30 (HOLDOUT9), 17/30
 # (HOLDOUT10), 24/30 (HOLDOUT11), 26/30 (HOLDOUT12), 17/30 (HOLDOUT13), 26/30 (HOLDOUT14), 20/30
 # (HOLDOUT15), 23/30 (HOLDOUT16), 24/30 (HOLDOUT17), 22/30 (HOLDOUT18), 24/30 (HOLDOUT19), 25/30
-# (HOLDOUT20), 23/30 (HOLDOUT21) and 20/30 (HOLDOUT22) (docs/diagnose.md). One BLAS thread per
-# process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 644/735 right over three seeds of the twenty-three sets (87.6 %); "
-                                         "at seed 0 216/245 (88.2 %)")
+# (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22) and 26/30 (HOLDOUT23) (docs/diagnose.md). One
+# BLAS thread per process, as measured (one_blas_thread).
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 670/765 right over three seeds of the twenty-four sets (87.6 %); "
+                                         "at seed 0 225/255 (88.2 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 216/245 right at seed 0 in round 25 (88.2 %); at least 209 (85 %), seven
+    # regression guard: 225/255 right at seed 0 in round 26 (88.2 %); at least 217 (85 %), eight
     # runs of margin for decisions that sit on a threshold
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 245
+    assert len(rows) >= 255
     assert right >= 0.85 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
@@ -96,8 +96,8 @@ def _over(rows):
 # at seed 0 had 1.49 estimated noise floors left, its floor 1.4 % above the true noise, so
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
-# limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 735 runs of the
-# twenty-three sets (round 25) no "explained" verdict is above 1.5 true noise levels.
+# limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 765 runs of the
+# twenty-four sets (round 26) no "explained" verdict is above 1.5 true noise levels.
 def test_explained_means_within_the_noise(rows):
     over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
@@ -108,12 +108,14 @@ def test_explained_means_within_the_noise(rows):
     assert any(r["case"] == "holdout16_oov_hunting_relay_hydraulic_follower_gray_code_staircase_370hz" for r in rows)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 74/87 runs (25/29 at seed 0) of the combined "
-                                        "cases of the twenty-three sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 74/90 runs (25/30 at seed 0) of the combined "
+                                        "cases of the twenty-four sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
-                                        "HOLDOUT20's recoiling base behind a late logger left unexplained)")
+                                        "HOLDOUT20's recoiling base behind a late logger left unexplained, "
+                                        "HOLDOUT23's LED heating its junction read as the inverse-square "
+                                        "asymmetry alone)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
