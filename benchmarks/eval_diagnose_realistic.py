@@ -26,8 +26,9 @@ HOLDOUT20 was run once for the twenty-second round's measurement (25 of 30 right
 HOLDOUT21 was run once for the twenty-fourth round's measurement (23 of 30 right) and is part of ALL since.
 HOLDOUT22 was run once for the twenty-fifth round's measurement (20 of 30 right) and is part of ALL since.
 HOLDOUT23 was run once for the twenty-sixth round's measurement (26 of 30 right) and is part of ALL since.
+HOLDOUT24 was run once for the twenty-sixth round's second measurement (24 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout23|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout24|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 
