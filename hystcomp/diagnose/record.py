@@ -400,8 +400,12 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     input, smoothed over 11 samples, stays within five noise widths (of
     the smoothed input's difference; the input's own noise, from its
     quietest stretches, at least 1e-4 of its span) of its value at the run's
-    run so far.  `step` is the input's change into the hold:
-    the hold level minus the mean input over the 2 s before it.
+    run so far.  `step` is the load change into the hold: the hold's level
+    minus the farthest the smoothed input was on the way in, since the
+    previous hold at another level ended or the input last turned back (by
+    1 % of its span or the noise tolerance, whichever is larger).  A hold
+    reached by a slow ramp thus counts its whole ramp, not only its last
+    seconds (until round 27: the mean input over the 2 s before the hold).
 
     Parameters
     ----------
@@ -438,8 +442,9 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     # and never less than 1e-4 of the span (a noise-free input)
     tol = max(5.0 * noise * math.sqrt(2.0 / 11.0), 1e-4 * span)
     min_len = max(int(min_samples), int(round(min_duration / dt)))
-    W = max(min_len, int(round(2.0 / dt)))
-    out, k = [], 0
+    # the approach turns back when the smoothed input returns by this much
+    turn = max(tol, 0.01 * span)
+    out, ends, k = [], [], 0
     while k < n - 1:
         # the run's reference is the mean of its smoothed samples so far
         total, j = vs[k], k + 1
@@ -451,12 +456,35 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
             a, b = min(k + 5, j - 1), max(j - 5, k + 1)
             if b - a >= min_len // 2:
                 level = float(np.mean(v[a:b]))
-                step = level - float(v[max(0, a - W):a].mean()) if a > 0 else 0.0
-                out.append((a, b, step))
+                # the walk back stops at the last hold at another level (holds
+                # at this level, as a slow approach splits into, are walked over)
+                stop = next((e for e, lv in reversed(ends) if abs(lv - level) > turn), 0)
+                out.append((a, b, _approach_step(vs, a, level, stop, turn)))
+                ends.append((b, level))
             k = j
         else:
             k += 1
     return out
+
+
+def _approach_step(vs, a, level, stop, turn):
+    """The load change into a hold starting at `a`: `level` minus the extreme
+    of the smoothed input `vs` walking back from `a` to `stop`, up to where it
+    first turned back by more than `turn` (a reversal).  Of the walk from
+    below and the walk from above, the larger change is the approach."""
+    if a <= stop:
+        return 0.0
+    back = vs[stop:a][::-1]
+    lo, hi = np.minimum.accumulate(back), np.maximum.accumulate(back)
+    best = 0.0
+    # from below: the lowest point before the input rose back by `turn`;
+    # from above: the highest before it fell back by `turn`
+    for ext, turned in ((lo, back - lo > turn), (hi, hi - back > turn)):
+        k = int(np.argmax(turned)) - 1 if turned.any() else back.size - 1
+        step = level - float(ext[max(k, 0)])
+        if abs(step) > abs(best):
+            best = step
+    return best
 
 
 #: pooled autocorrelation of the holds' scatter below which it is an oscillation

@@ -257,7 +257,7 @@ def evidence(rec, e, pred, sigma, only=None):
     if only is None or only in ('creep',):
         # -- creep: relaxation during holds in the direction of the step into them
         sig = "residual change during each hold against the step into it (either direction)"
-        moved = [(k, j, s) for k, j, s in rec.holds if abs(s) > 0.02 * rec.span]
+        moved = [(k, j, s) for k, j, s in _merged_holds(rec) if abs(s) > 0.02 * rec.span]
         n_up = sum(1 for _, _, s in moved if s > 0)
         n_dn = sum(1 for _, _, s in moved if s < 0)
         if not timed:
@@ -401,6 +401,24 @@ def evidence(rec, e, pred, sigma, only=None):
         put("initial_state", sig, _partial_fixed(e, rec, ("initial_state",), start_columns) / sigma, START,
             first_excursion=k1)
     return ev
+
+
+def _merged_holds(rec):
+    """The record's holds, those at one level merged: a slow approach to a
+    plateau splits it into short holds (the input still creeping by more
+    than the hold's tolerance) that are one hold for creep.  Consecutive
+    holds merge while the input between them stays within 1 % of the span
+    of the first one's level; the merged hold keeps the first one's step."""
+    out = []
+    turn = 0.01 * rec.span
+    for k, j, s in rec.holds:
+        if out:
+            k0, j0, s0, lv = out[-1]
+            if abs(float(np.mean(rec.v[k:j])) - lv) <= turn and np.all(np.abs(rec.v[j0:k] - lv) <= turn):
+                out[-1] = (k0, j, s0, lv)
+                continue
+        out.append((k, j, s, float(np.mean(rec.v[k:j]))))
+    return [(k, j, s) for k, j, s, _ in out]
 
 
 def _xcorr_lag(e, d, max_lag):
