@@ -1,14 +1,15 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the twenty-five sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the twenty-six sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (31 clean records in all, 5 CPU-seconds). 58 runs at seed 0; 56 were right in round 26
+other set (32 clean records in all, 5 CPU-seconds). 59 runs at seed 0; 57 were right in round 27
 (HOLDOUT9's unipolar generalized plays and HOLDOUT14's eddy-field separation were not; HOLDOUT21's
-clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26).
+clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
+HOLDOUT25's in round 27).
 """
 
 import os
@@ -44,8 +45,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 58
-    assert sum(r["clean"] for r in rows) == 31
+    assert len(rows) == 59
+    assert sum(r["clean"] for r in rows) == 32
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -57,11 +58,11 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 56/58 right in round 26 (round 22's 52/54 and the clean records of HOLDOUT21-24); at least
-    # 53 (91 %): three runs of margin for decisions that sit on a threshold and may fall
+    # 57/59 right in round 27 (round 22's 52/54 and the clean records of HOLDOUT21-25); at least
+    # 54 (92 %): three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 53, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 54, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
