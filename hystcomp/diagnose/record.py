@@ -400,12 +400,14 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     input, smoothed over 11 samples, stays within five noise widths (of
     the smoothed input's difference; the input's own noise, from its
     quietest stretches, at least 1e-4 of its span) of its value at the run's
-    run so far.  `step` is the load change into the hold: the hold's level
-    minus the farthest the smoothed input was on the way in, since the
-    previous hold at another level ended or the input last turned back (by
-    1 % of its span or the noise tolerance, whichever is larger).  A hold
-    reached by a slow ramp thus counts its whole ramp, not only its last
-    seconds (until round 27: the mean input over the 2 s before the hold).
+    run so far.  `step` is the load change into the hold since the input
+    last turned back: the hold's level minus the farthest the smoothed input
+    was on the way in, walking back to where it had turned back by 1 % of
+    its span (or the noise tolerance, if larger), over any holds on the way.
+    A hold reached by a slow ramp thus counts its whole ramp, and a stair of
+    a staircase every stair since the staircase turned (until round 27: the
+    hold's level minus the mean input over the 2 s before it, which counted
+    only the last seconds of a slow approach).
 
     Parameters
     ----------
@@ -444,7 +446,7 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     min_len = max(int(min_samples), int(round(min_duration / dt)))
     # the approach turns back when the smoothed input returns by this much
     turn = max(tol, 0.01 * span)
-    out, ends, k = [], [], 0
+    out, k = [], 0
     while k < n - 1:
         # the run's reference is the mean of its smoothed samples so far
         total, j = vs[k], k + 1
@@ -456,25 +458,22 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
             a, b = min(k + 5, j - 1), max(j - 5, k + 1)
             if b - a >= min_len // 2:
                 level = float(np.mean(v[a:b]))
-                # the walk back stops at the last hold at another level (holds
-                # at this level, as a slow approach splits into, are walked over)
-                stop = next((e for e, lv in reversed(ends) if abs(lv - level) > turn), 0)
-                out.append((a, b, _approach_step(vs, a, level, stop, turn)))
-                ends.append((b, level))
+                out.append((a, b, _approach_step(vs, a, level, turn)))
             k = j
         else:
             k += 1
     return out
 
 
-def _approach_step(vs, a, level, stop, turn):
+def _approach_step(vs, a, level, turn):
     """The load change into a hold starting at `a`: `level` minus the extreme
-    of the smoothed input `vs` walking back from `a` to `stop`, up to where it
-    first turned back by more than `turn` (a reversal).  Of the walk from
-    below and the walk from above, the larger change is the approach."""
-    if a <= stop:
+    of the smoothed input `vs` walking back from `a`, up to where it first
+    turned back by more than `turn` (a reversal; else the record's start).
+    Of the walk from below and the walk from above, the larger change is the
+    approach."""
+    if a <= 0:
         return 0.0
-    back = vs[stop:a][::-1]
+    back = vs[:a][::-1]
     lo, hi = np.minimum.accumulate(back), np.maximum.accumulate(back)
     best = 0.0
     # from below: the lowest point before the input rose back by `turn`;
