@@ -465,24 +465,31 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     return out
 
 
-def _approach_step(vs, a, level, turn):
+def _approach_step(vs, a, level, turn, chunk=4096):
     """The load change into a hold starting at `a`: `level` minus the extreme
     of the smoothed input `vs` walking back from `a`, up to where it first
     turned back by more than `turn` (a reversal; else the record's start).
     Of the walk from below and the walk from above, the larger change is the
-    approach."""
-    if a <= 0:
-        return 0.0
-    back = vs[:a][::-1]
-    lo, hi = np.minimum.accumulate(back), np.maximum.accumulate(back)
+    approach.  The walk reads back in blocks of `chunk` samples and stops at
+    the reversal, so its cost is the approach's length, not the record's."""
     best = 0.0
-    # from below: the lowest point before the input rose back by `turn`;
-    # from above: the highest before it fell back by `turn`
-    for ext, turned in ((lo, back - lo > turn), (hi, hi - back > turn)):
-        k = int(np.argmax(turned)) - 1 if turned.any() else back.size - 1
-        step = level - float(ext[max(k, 0)])
-        if abs(step) > abs(best):
-            best = step
+    for sign in (1.0, -1.0):            # from below (a running minimum), from above
+        ext, j = math.inf, a
+        while j > 0:
+            back = sign * vs[max(0, j - chunk):j][::-1]
+            run = np.minimum(np.minimum.accumulate(back), ext)
+            turned = back - run > turn
+            if turned.any():
+                k = int(np.argmax(turned))
+                # the extreme before the input turned back (the sample before the turn)
+                ext = float(run[k - 1]) if k > 0 else ext
+                break
+            ext = float(run[-1])
+            j -= back.size
+        if math.isfinite(ext):
+            step = level - sign * ext
+            if abs(step) > abs(best):
+                best = step
     return best
 
 
