@@ -394,6 +394,11 @@ def _smooth(x, m):
     return np.convolve(xp, k, mode="valid")
 
 
+#: the input has turned back (a reversal ends the walk into a hold) when it returns
+#: by this share of its span; holds within it of one level are one hold for creep
+TURN_BACK = 0.01
+
+
 def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     """Segments where the input stays put: (start, end, step) of each run of
     at least ``max(min_samples, min_duration/dt)`` samples in which the
@@ -445,7 +450,7 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     tol = max(5.0 * noise * math.sqrt(2.0 / 11.0), 1e-4 * span)
     min_len = max(int(min_samples), int(round(min_duration / dt)))
     # the approach turns back when the smoothed input returns by this much
-    turn = max(tol, 0.01 * span)
+    turn = max(tol, TURN_BACK * span)
     out, k = [], 0
     while k < n - 1:
         # the run's reference is the mean of its smoothed samples so far

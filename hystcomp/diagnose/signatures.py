@@ -15,6 +15,8 @@ import math
 
 import numpy as np
 
+from .record import TURN_BACK
+
 #: partial-RMS threshold (fraction of the noise floor) of the regression signatures
 PARTIAL = 0.5
 #: the delay's test reads the samples where the model's output moves faster than this
@@ -410,7 +412,7 @@ def _merged_holds(rec):
     holds merge while the input between them stays within 1 % of the span
     of the first one's level; the merged hold keeps the first one's step."""
     out = []
-    turn = 0.01 * rec.span
+    turn = TURN_BACK * rec.span
     for k, j, s in rec.holds:
         if out:
             k0, j0, s0, lv = out[-1]
