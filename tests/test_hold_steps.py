@@ -102,3 +102,60 @@ def test_creep_under_first_order_approaches_is_tested_and_named(seed):
     rep = diagnose(t, v, y, progress=False)
     assert "creep" not in rep.untested, rep.report()
     assert rep.effects == ["creep"] and rep.verdict == "explained", rep.report()
+
+
+def _python_runs(vs, tol, min_len):
+    """The Python scan find_holds ran until round 28: runs [k, j) within tol of their running mean."""
+    n, out, k = vs.size, [], 0
+    while k < n - 1:
+        total, j = vs[k], k + 1
+        while j < n and abs(vs[j] - total / (j - k)) <= tol:
+            total += vs[j]
+            j += 1
+        if j - k >= min_len:
+            out.append((k, j))
+            k = j
+        else:
+            k += 1
+    return out
+
+
+def test_the_compiled_scan_finds_the_python_scans_runs_to_the_last_sample():
+    # the same arithmetic in the same order, so the same runs exactly (no tolerance): random walks, noisy staircases
+    # whose stairs are just under, at and over the shortest run, and noisy sines, with tolerances at the noise's scale
+    from hystcomp.diagnose._hold_runs import hold_runs
+    rng = np.random.default_rng(28)
+    found = 0
+    for i in range(300):
+        n = int(rng.integers(30, 2500))
+        min_len = int(rng.integers(2, 60))
+        kind = i % 3
+        if kind == 0:
+            vs = np.cumsum(rng.standard_normal(n))
+        elif kind == 1:
+            stair = min_len + int(rng.integers(-3, 4))
+            vs = np.repeat(rng.standard_normal(n // max(stair, 1) + 1), max(stair, 1))[:n]
+            vs = vs + 1e-3 * rng.standard_normal(n)
+        else:
+            vs = np.sin(np.linspace(0, rng.uniform(1, 30), n)) + 1e-3 * rng.standard_normal(n)
+        tol = float(rng.choice([1e-3, 3e-3, 0.3, 2.0]))
+        starts, ends = hold_runs(vs, tol, min_len)
+        runs = _python_runs(vs, tol, min_len)
+        assert list(zip(starts.tolist(), ends.tolist())) == runs
+        found += len(runs)
+    assert found > 500      # the check compared runs, not empty lists (measured: several thousand)
+
+
+def test_a_staircase_of_stairs_just_under_the_shortest_hold_has_no_hold():
+    # 0.1 s stairs at 1 kHz (100 samples, the shortest hold): the smoothing's half-widths leave each run short, so no
+    # hold (the compiled scan's worst case: every start scans almost a shortest hold); stairs of 0.15 s are holds, one
+    # inside each stair, 130 samples of its 150 (the smoothing's 5 samples into each neighbour, and the hold's own
+    # shrinking by 5 at each end); the first and the last 135 (the record's ends have no neighbour)
+    fs = 1000.0
+    rng = np.random.default_rng(3)
+    levels = rng.uniform(-1, 1, 40)
+    v = _noisy(np.repeat(levels, 100))
+    assert find_holds(v, 1 / fs, float(np.ptp(v))) == []
+    v = _noisy(np.repeat(levels, 150))
+    holds = find_holds(v, 1 / fs, float(np.ptp(v)))
+    assert [(a // 150, b - a) for a, b, _ in holds] == [(i, 135 if i in (0, 39) else 130) for i in range(40)]

@@ -7,6 +7,7 @@ import numpy as np
 
 from .._validation import as_scalar, as_signal
 from ..identify._records import _seconds
+from ._hold_runs import hold_runs
 
 
 #: share of the input span by which the held-out part may leave the fitted
@@ -441,7 +442,6 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     >>> [(k // 10, j // 10, bool(s > 0)) for k, j, s in holds]
     [(5, 14, True), (20, 29, False)]
     """
-    n = v.size
     if noise is None:
         noise = _input_noise(v)
     vs = _smooth(v, 5)
@@ -451,22 +451,15 @@ def find_holds(v, dt, span, noise=None, min_duration=0.1, min_samples=10):
     min_len = max(int(min_samples), int(round(min_duration / dt)))
     # the approach turns back when the smoothed input returns by this much
     turn = max(tol, TURN_BACK * span)
-    out, k = [], 0
-    while k < n - 1:
-        # the run's reference is the mean of its smoothed samples so far
-        total, j = vs[k], k + 1
-        while j < n and abs(vs[j] - total / (j - k)) <= tol:
-            total += vs[j]
-            j += 1
-        if j - k >= min_len:
-            # a hold is judged by its own level: shrink by the smoothing half-width
-            a, b = min(k + 5, j - 1), max(j - 5, k + 1)
-            if b - a >= min_len // 2:
-                level = float(np.mean(v[a:b]))
-                out.append((a, b, _approach_step(vs, a, level, turn)))
-            k = j
-        else:
-            k += 1
+    out = []
+    # runs whose samples stay within tol of the mean of the run's smoothed samples so far
+    starts, ends = hold_runs(np.ascontiguousarray(vs, dtype=np.float64), float(tol), int(min_len))
+    for k, j in zip(starts.tolist(), ends.tolist()):
+        # a hold is judged by its own level: shrink by the smoothing half-width
+        a, b = min(k + 5, j - 1), max(j - 5, k + 1)
+        if b - a >= min_len // 2:
+            level = float(np.mean(v[a:b]))
+            out.append((a, b, _approach_step(vs, a, level, turn)))
     return out
 
 
