@@ -115,7 +115,9 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         :func:`~hystcomp.diagnose.base.play_thresholds`) or a
         :class:`~hystcomp.models.PI` whose thresholds are used.
     n_thresholds : int
-        Number of plays of the default base model.
+        Number of plays of the default base model.  A diagnosis left above
+        the explained bound refits its final model with twice as many
+        (:attr:`Diagnosis.finer_core`; not with `base` given as a PI).
     progress : bool
         Progress lines on stderr.
     time : str or None
@@ -263,7 +265,8 @@ def evidence(t, v, y, model=None, validation=0.3, held_out="auto"):
     ctx = base_context(rec)
     base = VariableProjection(ctx, rec.y, rec.train).evaluate(Structure(), {}).prediction
     sigma, _ = noise_floor(rec, rec.y - base)
-    pred = base if model is None else rec.output_sign * np.asarray(model.simulate(rec.v), dtype=np.float64)
+    pred = base if model is None else (rec.output_sign * np.asarray(model.simulate(rec.v), dtype=np.float64)
+                                       - rec.y_offset)
     return _evidence(rec, rec.y - pred, pred, sigma)
 
 

@@ -187,6 +187,9 @@ class Record:
     def __init__(self, t, v, y, validation, held_out="auto"):
         self.v = as_signal(v, "v", min_length=2)
         self.y = as_signal(y, "y", min_length=2)
+        #: the output as measured (:attr:`y` is the output the parts fit: times
+        #: :attr:`output_sign`, less :attr:`y_offset`)
+        self.measured = self.y
         n = self.v.size
         if self.y.size != n:
             raise ValueError(f"Parameter y has {self.y.size} samples but v has {n}; expected equal lengths")
@@ -223,6 +226,7 @@ class Record:
         self.span = self.vmax - self.vmin
         if self.span <= 0:
             raise ValueError(f"Parameter v is constant ({self.v[0]}); diagnosis needs an input that moves")
+        _check_scale(self.v, self.span, "v")
         # a smoothed input and its rate (per second, or per sample without a time axis)
         self.vs = _smooth(self.v, 5)
         self.rate = np.gradient(self.vs) if self.dt is None else np.gradient(self.vs, self.dt)
@@ -251,11 +255,20 @@ class Record:
         self.y_span = float(np.ptp(self.y))
         if self.y_span <= 0:
             raise ValueError(f"Parameter y is constant ({self.y[0]}); there is no response to diagnose")
+        _check_scale(self.y, self.y_span, "y")
         # an output that falls as the input rises: the parts (weights >= 0) model -y
         slope = float(np.polyfit(self.v, self.y, 1)[0])
         self.output_sign = -1.0 if slope < 0 else 1.0
         if self.output_sign < 0:
             self.y = -self.y
+        # an output far from 0 is fitted about its median: the solves' Gram
+        # matrices square the output, and a level 50,000 spans from 0 left 1.5
+        # noise floors where the same record about 0 left 1.0 (round 28)
+        self.y_offset = 0.0
+        med = float(np.median(self.y))
+        if abs(med) > FAR_OUTPUT * self.y_span:
+            self.y_offset = med
+            self.y = self.y - med
         # the plays' rest point (the core's origin): physical zero when the record
         # contains or comes near 0 (a unipolar record 0..100 V: plays up to the
         # full span); else the first sample (a record far from 0 starts with
@@ -393,6 +406,31 @@ def _smooth(x, m):
     k = np.ones(2 * m + 1) / (2 * m + 1)
     xp = np.pad(x, m, mode="edge")
     return np.convolve(xp, k, mode="valid")
+
+
+#: the smallest noise floor, in output spans: the solves' ridge leaves about
+#: 1e-6 of the span on a noise-free record the base model draws exactly (y = v:
+#: 1.1e-6), which a floor of 1e-6 (until round 28) judged as structure, naming
+#: an asymmetry or a rate dependence on it; the floor is ten times that (a
+#: 16-bit converter's quantisation over its full scale is 4.4e-6)
+RESOLUTION = 1e-5
+
+#: an output whose median is more than this many spans from 0 is fitted about
+#: its median (the model adds it back: ``PartsModel.offset``)
+FAR_OUTPUT = 100.0
+
+#: the largest and the smallest span and magnitude of a record's columns: the
+#: diagnosis squares and sums the samples
+LARGEST, SMALLEST = 1e100, 1e-100
+
+
+def _check_scale(x, span, name):
+    """Reject a column whose squares and sums would overflow or underflow."""
+    big = float(np.max(np.abs(x)))
+    if big > LARGEST or span < SMALLEST:
+        raise ValueError(f"Parameter {name} spans {span:.3g} with values up to {big:.3g} in magnitude; diagnosis "
+                         f"needs a span of at least {SMALLEST:g} and values within {LARGEST:g} (it squares and "
+                         f"sums the samples): rescale {name} (e.g. to other units)")
 
 
 #: the input has turned back (a reversal ends the walk into a hold) when it returns
@@ -576,10 +614,14 @@ def noise_floor(rec, residual):
             info["holds_oscillate"] = {"lag_samples": lag, "autocorrelation": round(acf, 4),
                                        "scatter": info.pop("holds")}
     sigma = max(hf, info.get("holds", 0.0))
-    # never zero (a noise-free record): a floor at 1e-6 of the output span
-    sigma = max(sigma, 1e-6 * rec.y_span)
     info["method"] = ("holds" if info.get("holds", 0.0) > hf else "high_frequency")
-    if info["method"] == "holds":
+    if sigma < RESOLUTION * rec.y_span:
+        # never zero (a noise-free record): the record shows no noise above the
+        # solves' resolution, and the floor is it
+        sigma = RESOLUTION * rec.y_span
+        info["method"] = "resolution"
+        info["relative_standard_error"] = 0.0
+    elif info["method"] == "holds":
         # the median of the holds' scatters: each a standard deviation of m - 3
         # degrees of freedom (relative standard error 1 / sqrt(2 (m - 3))), the
         # median 1.2533 times a mean's standard error

@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, caution
 
-SCHEMA_VERSION = 15
+SCHEMA_VERSION = 16
 
 
 def _jsonable(x):
@@ -195,6 +195,15 @@ class Diagnosis:
         base models' BIC on the fitted part, ``why`` the report's line.
         Neither is an unknown memory, so no effect is named for it (an
         ``initial_state`` is one beyond both).
+    finer_core : dict or None
+        When the final model left the held-out part above the explained
+        bound: the same model refitted with twice as many plays
+        (:mod:`hystcomp.diagnose.resolution`): ``plays``, ``rms_heldout``,
+        ``noise_floors``, ``signatures_present`` and ``taken`` (within the
+        bound with no signature present: the model and the verdict are the
+        finer core's; what remained was the base model's grid of
+        thresholds, not an effect).  None when the final model was within
+        the bound or the thresholds were given.
     held_out_beyond_fitted_range : float
         How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0: inside it).  Above 0.05 the report
@@ -236,6 +245,7 @@ class Diagnosis:
     held_out_moved = 0.0
     held_out_moved_faster = 0.0
     other_split = None
+    finer_core = None
     held_out_blocks = ()
     rest = None
 
@@ -256,7 +266,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 15; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 16; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -269,7 +279,8 @@ class Diagnosis:
         saturating output map, whose ``rms_before`` is the held-out RMS with
         the map's centre held at the offset, 15 ``start_or_trend`` in the
         ``evidence`` of a step where a drift and an initial state gained
-        alike held out and the training fit chose between them).
+        alike held out and the training fit chose between them, 16
+        ``finer_core``).
 
         Returns
         -------
@@ -291,7 +302,7 @@ class Diagnosis:
             "rms_heldout": self.rms_heldout, "rms_heldout_pct": self._pct(self.rms_heldout),
             "output_span": self.output_span,
             "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
-            "other_split": self.other_split, "rest": self.rest,
+            "other_split": self.other_split, "rest": self.rest, "finer_core": self.finer_core,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
             "steps": steps, "untested": dict(self.untested),
@@ -318,9 +329,11 @@ class Diagnosis:
         str
         """
         s = self.noise_floor
-        lines = [f"base model: PI with {self.model._ctx.thresholds.size} plays; held-out RMS {self.rms_before:.4g} "
+        lines = [f"base model: PI with {self.base_model._ctx.thresholds.size} plays; held-out RMS {self.rms_before:.4g} "
                  f"({self._pct(self.rms_before):.3g} % of the output span), noise floor {s:.4g} "
-                 f"({self._pct(s):.3g} %, from the {self.noise_info['method'].replace('_', '-')} part)"]
+                 + (f"({self._pct(s):.3g} %: the diagnosis's resolution, the record shows no noise above it)"
+                    if self.noise_info["method"] == "resolution" else
+                    f"({self._pct(s):.3g} %, from the {self.noise_info['method'].replace('_', '-')} part)")]
         if self.rest is not None and self.rest.get("other") is not None:
             lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():
@@ -351,6 +364,14 @@ class Diagnosis:
             what = f"replaced by {rv['by']} ({rv['effect_after']})" if rv["by"] else "dropped"
             lines.append(f"revision: step {rv['step']}'s {rv['replaced']} {what}: held-out RMS {rv['rms_before']:.4g} "
                          f"-> {rv['rms_after']:.4g} ({rv['reason']})")
+        fc = self.finer_core
+        if fc is not None:
+            lines.append(f"finer core ({fc['plays']} plays): held-out RMS {fc['rms_heldout']:.4g} "
+                         f"({fc['noise_floors']:.3g} x noise floor)"
+                         + ("; taken: what remained was the base model's grid of thresholds, not an effect"
+                            if fc["taken"] else "; not taken" + (
+                                f" (signatures present: {', '.join(fc['signatures_present'])})"
+                                if fc["signatures_present"] else "")))
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
         if self.held_out_moved > 0 or self.held_out_moved_faster > 0 or len(self.held_out_blocks) > 1:
@@ -405,7 +426,9 @@ class Diagnosis:
         s = self.noise_floor
         xax = rec.t if rec.t is not None else np.arange(rec.n)
         xlabel = "time [s]" if rec.t is not None else "sample index"
-        e0 = rec.y - self._base_pred
+        # measured minus model in the output's own sign (the parts fit the output times its sign)
+        sgn = rec.output_sign
+        e0 = sgn * (rec.y - self._base_pred)
         idx = np.linspace(0, rec.n - 1, min(rec.n, 5000)).astype(int)
         fig, ax = new_figure(2, 2, size=(12, 7.5))
         ax = ax.ravel()
@@ -459,8 +482,9 @@ class Diagnosis:
             sel, note = val, ""
         final = self._final_pred
         for a, pred, name in ((ax[0], self._base_pred, "base PI"), (ax[1], final, "final model")):
-            a.plot(rec.v[sel], rec.y[sel], ".", color="0.5", ms=1.5, label="measured")
-            a.plot(rec.v[sel], pred[sel], ".", ms=1.5, label=name)
+            # in the output's units, sign and level as measured
+            a.plot(rec.v[sel], rec.measured[sel], ".", color="0.5", ms=1.5, label="measured")
+            a.plot(rec.v[sel], rec.output_sign * (pred[sel] + rec.y_offset), ".", ms=1.5, label=name)
             rms = float(np.sqrt(np.mean((rec.y - pred)[val] ** 2)))
             a.set(xlabel=f"input v [{iu}]", ylabel=f"output y [{ou}]",
                   title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
@@ -493,14 +517,18 @@ class Diagnosis:
                 if st.get("alternatives"):
                     lab += f" (or {' or '.join(a['effect'] for a in st['alternatives'])}: near tie)"
             labels.append(lab + (" [tentative]" if st.get("tentative") else ""))
-        if len(preds) > len(labels):
+        finer = getattr(self, "finer_core", None)
+        finer = finer if finer and finer["taken"] else None
+        if len(preds) > len(labels) + (finer is not None):
             labels.append(f"final: {self._final_name()} (after revision)")
+        if finer is not None:
+            labels.append(f"final: {self._final_name()} with {finer['plays']} plays (the finer core)")
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)
         ylim = max(4.0 * s, 1.3 * float(np.percentile(np.abs(rec.y - preds[0]), 99.5))) or 1.0
         for a, p, lab in zip(ax, preds, labels):
-            e = rec.y - p
+            e = rec.output_sign * (rec.y - p)
             rms = float(np.sqrt(np.mean(e[~rec.train] ** 2)))
             a.plot(xax[idx], e[idx], lw=0.6)
             a.axhspan(-s, s, color="C2", alpha=0.25)

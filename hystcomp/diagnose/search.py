@@ -12,6 +12,7 @@ from ..identify.search import FIT_ERRORS, PartsModel, Structure
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .off_centre import off_centre_test
 from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
+from .resolution import finer_core
 from .signatures import evidence as _evidence
 from .start_or_trend import start_or_trend, start_or_trend_revised
 
@@ -169,6 +170,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     held = ~rec.train
     base_struct = Structure()
     ctx, vp, cur, rest = rest_point(rec, n_thresholds, thresholds)
+    base_ctx = ctx
     if rest["other"] is not None:
         say(rest["why"])
 
@@ -412,10 +414,18 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds,
                                       step_preds, say)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
+    finer = None
+    if thresholds is None and rms_val(cur) > explained_limit * sigma:
+        # what is left may be the base model's grid of thresholds, not an effect
+        finer, taken = finer_core(rec, vp, struct, cur, sigma, n_thresholds, explained_limit, untested, say)
+        if taken is not None:
+            ctx, cur, final_ev = taken
+            step_preds.append(cur.prediction)
     sgn = rec.output_sign
-    model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn)
-    base_model = PartsModel(base_struct, base_pt.values, base_pt.theta, ctx, base_pt.names, sign=sgn)
-    rms_final = _rms((sgn * rec.y - model.simulate(rec.v))[held])
+    model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn, offset=rec.y_offset)
+    base_model = PartsModel(base_struct, base_pt.values, base_pt.theta, base_ctx, base_pt.names, sign=sgn,
+                            offset=rec.y_offset)
+    rms_final = _rms((rec.measured - model.simulate(rec.v))[held])
     present = {k: x for k, x in final_ev.items() if x["present"] and k not in untested}
     remaining = {}
     if rms_final > explained_limit * sigma:
@@ -496,7 +506,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 validation=rec.held_interval(), held_out_blocks=rec.held_blocks(), rest=rest,
                 held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
-                revisions=revisions, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
+                revisions=revisions, finer_core=finer, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _off_centre=off_centre, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
 

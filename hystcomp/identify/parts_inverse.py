@@ -145,6 +145,7 @@ class _Stepper:
         D = st.after_output(vals, self.ctx_n) if hasattr(st, "after_output") else 0.0
         self.after = np.broadcast_to(np.asarray(D, dtype=np.float64), (n,)).copy()
         self.sign = model.sign
+        self.offset = getattr(model, "offset", 0.0)
         self.reset()
 
     def reset(self):
@@ -321,7 +322,7 @@ class PartsInverse:
         ref = as_signal(reference, "reference")
         n = ref.size
         st = _Stepper(self.model, n)
-        target = ref * st.sign
+        target = ref * st.sign - st.offset
         a, b = ((x - st.origin) / st.scale for x in self.input_limits)
         tol = self.tolerance / st.scale
         out = np.empty(n)

@@ -618,6 +618,10 @@ class PartsModel:
     sign : float
         1, or -1 for an output that falls as the input rises (the parts
         model ``-y``).
+    offset : float
+        A level the parts' output is taken about (added before the sign):
+        a diagnosis fits an output far from 0 about its median
+        (:data:`hystcomp.diagnose.record.FAR_OUTPUT`); 0 otherwise.
 
     Examples
     --------
@@ -631,8 +635,9 @@ class PartsModel:
     True
     """
 
-    def __init__(self, structure, values, theta, ctx, names=(), sign=1.0):
+    def __init__(self, structure, values, theta, ctx, names=(), sign=1.0, offset=0.0):
         self.sign = float(sign)
+        self.offset = float(offset)
         self.structure = structure
         self.values = {k: dict(v) for k, v in values.items()}
         self.theta = np.asarray(theta, dtype=np.float64)
@@ -672,6 +677,8 @@ class PartsModel:
         out = self.structure.output_part()
         y = u if out is None else out.output(u, self.values.get(out.kind, {}), ctx)
         y = y + self.structure.after_output(self.values, ctx)
+        if self.offset:
+            y = y + self.offset
         return y if self.sign > 0 else -y
 
     def exact_inverse(self, input_limits=None, tolerance=None):
