@@ -71,6 +71,8 @@ how the diagnosis decides, and run once for the twenty-sixth round's second meas
 :data:`HOLDOUT25` (``cases_holdout25.py``) was written after HOLDOUT24 was measured, by a session that did not read
 how the diagnosis decides, and run once for the twenty-seventh round's measurement (docs/diagnose.md, commit
 acecc42, 21 of 30 runs right); it is part of :data:`ALL` since.
+:data:`HOLDOUT26` (``cases_holdout26.py``) was written after HOLDOUT25 was measured, by a session that did not read
+how the diagnosis decides, to be run once for the next round's measurement; it is not yet part of :data:`ALL`.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -100,6 +102,7 @@ from .cases_holdout22 import HOLDOUT22  # noqa: F401
 from .cases_holdout23 import HOLDOUT23  # noqa: F401
 from .cases_holdout24 import HOLDOUT24  # noqa: F401
 from .cases_holdout25 import HOLDOUT25  # noqa: F401
+from .cases_holdout26 import HOLDOUT26  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -109,4 +112,5 @@ ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HO
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
            "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "HOLDOUT15", "HOLDOUT16", "HOLDOUT17", "HOLDOUT18",
-           "HOLDOUT19", "HOLDOUT20", "HOLDOUT21", "HOLDOUT22", "HOLDOUT23", "HOLDOUT24", "HOLDOUT25", "ALL"]
+           "HOLDOUT19", "HOLDOUT20", "HOLDOUT21", "HOLDOUT22", "HOLDOUT23", "HOLDOUT24", "HOLDOUT25", "HOLDOUT26",
+           "ALL"]
