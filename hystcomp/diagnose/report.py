@@ -196,7 +196,8 @@ class Diagnosis:
         Neither is an unknown memory, so no effect is named for it (an
         ``initial_state`` is one beyond both).
     finer_core : dict or None
-        When the final model left the held-out part above the explained
+        When the base model (checked before the search; reported only when
+        taken) or the final model left the held-out part above the explained
         bound: the same model refitted with twice as many plays
         (:mod:`hystcomp.diagnose.resolution`): ``plays``, ``rms_heldout``,
         ``noise_floors``, ``signatures_present`` and ``taken`` (within the

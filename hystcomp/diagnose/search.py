@@ -200,12 +200,19 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             untested[eff] = first_ev[eff]["reading"]
     for k, why in untested.items():
         say(f"{k}: {why}")
+    finer, start_ev = None, first_ev
+    if thresholds is None and rms0 > explained_limit * sigma:
+        # the base model's grid may be all that is left, before any effect is tried
+        at_base, taken = finer_core(rec, vp, base_struct, cur, sigma, n_thresholds, explained_limit, untested, say)
+        if taken is not None:
+            finer = at_base
+            ctx, vp, cur, start_ev = taken
     candidates = [cls for cls in PARTS.values() if cls.effect in effects and cls.effect not in untested
                   and not (cls.needs_time and rec.dt is None)]
     steps, chosen, chosen_kinds, step_trials = [], [], [], []
-    step_preds = [cur.prediction]
+    step_preds = [base_pt.prediction] + ([cur.prediction] if cur is not base_pt else [])
     stopped = "no candidate effect to try"
-    ev = first_ev
+    ev = start_ev
 
     def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None):
         """Record a step: `part` added, fit `pt` of structure `st`, judged against
@@ -414,12 +421,11 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds,
                                       step_preds, say)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
-    finer = None
-    if thresholds is None and rms_val(cur) > explained_limit * sigma:
+    if finer is None and thresholds is None and rms_val(cur) > explained_limit * sigma:
         # what is left may be the base model's grid of thresholds, not an effect
         finer, taken = finer_core(rec, vp, struct, cur, sigma, n_thresholds, explained_limit, untested, say)
         if taken is not None:
-            ctx, cur, final_ev = taken
+            ctx, vp, cur, final_ev = taken
             step_preds.append(cur.prediction)
     sgn = rec.output_sign
     model = PartsModel(struct, cur.values, cur.theta, ctx, cur.names, sign=sgn, offset=rec.y_offset)
