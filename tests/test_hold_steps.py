@@ -12,6 +12,9 @@ Tolerances: the inputs carry noise of 1e-4 of their span; the steps are compared
 approach, whose first hold starts about 1 % of the span short of the level.
 """
 
+import os
+import sys
+
 import numpy as np
 import pytest
 from scipy.signal import lfilter
@@ -20,6 +23,9 @@ from hystcomp.diagnose import diagnose
 from hystcomp.diagnose.record import find_holds
 from hystcomp.diagnose.signatures import _merged_holds
 from hystcomp.models import PI
+
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "benchmarks"))
+from bench_holds import python_runs  # noqa: E402  (the Python scan find_holds ran until round 28)
 
 DT = 0.01
 
@@ -104,22 +110,6 @@ def test_creep_under_first_order_approaches_is_tested_and_named(seed):
     assert rep.effects == ["creep"] and rep.verdict == "explained", rep.report()
 
 
-def _python_runs(vs, tol, min_len):
-    """The Python scan find_holds ran until round 28: runs [k, j) within tol of their running mean."""
-    n, out, k = vs.size, [], 0
-    while k < n - 1:
-        total, j = vs[k], k + 1
-        while j < n and abs(vs[j] - total / (j - k)) <= tol:
-            total += vs[j]
-            j += 1
-        if j - k >= min_len:
-            out.append((k, j))
-            k = j
-        else:
-            k += 1
-    return out
-
-
 def test_the_compiled_scan_finds_the_python_scans_runs_to_the_last_sample():
     # the same arithmetic in the same order, so the same runs exactly (no tolerance): random walks, noisy staircases
     # whose stairs are just under, at and over the shortest run, and noisy sines, with tolerances at the noise's scale
@@ -140,7 +130,7 @@ def test_the_compiled_scan_finds_the_python_scans_runs_to_the_last_sample():
             vs = np.sin(np.linspace(0, rng.uniform(1, 30), n)) + 1e-3 * rng.standard_normal(n)
         tol = float(rng.choice([1e-3, 3e-3, 0.3, 2.0]))
         starts, ends = hold_runs(vs, tol, min_len)
-        runs = _python_runs(vs, tol, min_len)
+        runs = python_runs(vs, tol, min_len)
         assert list(zip(starts.tolist(), ends.tolist())) == runs
         found += len(runs)
     assert found > 500      # the check compared runs, not empty lists (measured: several thousand)
