@@ -115,9 +115,10 @@ def diagnose(t, v=None, y=None, effects=ALL, validation=0.3, max_effects=4, base
         :func:`~hystcomp.diagnose.base.play_thresholds`) or a
         :class:`~hystcomp.models.PI` whose thresholds are used.
     n_thresholds : int
-        Number of plays of the default base model.  A diagnosis left above
-        the explained bound refits its final model with twice as many
-        (:attr:`Diagnosis.finer_core`; not with `base` given as a PI).
+        Number of plays of the default base model.  A base model above the
+        explained bound (before the search) and a final model above it (at
+        its end) are refitted with twice as many (:attr:`Diagnosis.finer_core`;
+        not with `base` given as a PI).
     progress : bool
         Progress lines on stderr.
     time : str or None

@@ -330,7 +330,8 @@ class Diagnosis:
         str
         """
         s = self.noise_floor
-        lines = [f"base model: PI with {self.base_model._ctx.thresholds.size} plays; held-out RMS {self.rms_before:.4g} "
+        plays = self.base_model._ctx.thresholds.size
+        lines = [f"base model: PI with {plays} plays; held-out RMS {self.rms_before:.4g} "
                  f"({self._pct(self.rms_before):.3g} % of the output span), noise floor {s:.4g} "
                  + (f"({self._pct(s):.3g} %: the diagnosis's resolution, the record shows no noise above it)"
                     if self.noise_info["method"] == "resolution" else

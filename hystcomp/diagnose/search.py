@@ -203,7 +203,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     finer, start_ev = None, first_ev
     if thresholds is None and rms0 > explained_limit * sigma:
         # the base model's grid may be all that is left, before any effect is tried
-        at_base, taken = finer_core(rec, vp, base_struct, cur, sigma, n_thresholds, explained_limit, untested, say)
+        at_base, taken = finer_core(rec, vp, base_struct, cur, sigma, n_thresholds, explained_limit, untested,
+                                   rms_val, say)
         if taken is not None:
             finer = at_base
             ctx, vp, cur, start_ev = taken
@@ -423,7 +424,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     if finer is None and thresholds is None and rms_val(cur) > explained_limit * sigma:
         # what is left may be the base model's grid of thresholds, not an effect
-        finer, taken = finer_core(rec, vp, struct, cur, sigma, n_thresholds, explained_limit, untested, say)
+        finer, taken = finer_core(rec, vp, struct, cur, sigma, n_thresholds, explained_limit, untested, rms_val,
+                                   say)
         if taken is not None:
             ctx, vp, cur, final_ev = taken
             step_preds.append(cur.prediction)
@@ -512,7 +514,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 validation=rec.held_interval(), held_out_blocks=rec.held_blocks(), rest=rest,
                 held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
-                revisions=revisions, finer_core=finer, first_evidence=first_ev, final_evidence=final_ev, elapsed=time.perf_counter() - t0,
+                revisions=revisions, finer_core=finer, first_evidence=first_ev, final_evidence=final_ev,
+                elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _off_centre=off_centre, _rec=rec, _base_pred=base_pt.prediction,
                 _final_pred=cur.prediction, _step_preds=step_preds)
 
