@@ -233,6 +233,8 @@ def test_single_frequency_leaves_rate_dependence_untested():
     rep = diagnose(d.t, d.v, d.y, progress=False)
     assert "rate_dependence" in rep.untested and "rate_dependence" not in rep.effects
     assert "one rate" in rep.untested["rate_dependence"]
+    # ... and it warns that a delay named at one frequency may be a lag (the same phase shift)
+    assert "dead time" in rep.untested["rate_dependence"]
 
 
 def test_plots(tmp_path):

@@ -29,6 +29,28 @@ def test_kernel_is_the_fixed_delay_at_both_ends_and_interpolates_between():
     np.testing.assert_allclose(c[10:], (ramp - d)[10:], atol=1e-12)
 
 
+def test_kernel_keeps_a_band_limited_input_s_shape():
+    # a dead time delays without filtering: a sine at 0.02 ... 0.1 cycles a sample delayed by
+    # a fraction of a sample matches the exactly delayed sine to within the cubic Lagrange
+    # interpolator's error (its worst, half-way between samples: 1 - (9 cos(w/2) - cos(3w/2)) / 8,
+    # 2.3e-4 at 0.05 cycles a sample; the bound allows 2x); linear interpolation would be off by
+    # up to 1 - cos(w/2) (1.2e-2 at 0.05 cycles a sample)
+    k = np.arange(3000.0)
+    for cycles in (0.02, 0.05, 0.1):
+        w = 2 * np.pi * cycles
+        worst = 1.0 - (9 * np.cos(w / 2) - np.cos(3 * w / 2)) / 8
+        for d in (0.5, 2.25, 7.8):
+            out = np.empty_like(k)
+            fractional_delay(np.sin(w * k), d, out)
+            err = np.abs(out - np.sin(w * (k - d)))[20:-20].max()
+            assert err <= 2 * worst + 1e-12, (cycles, d, err)
+    # exact on cubic polynomials away from the start (x[0] is held before it)
+    cube = (k / 100.0) ** 3
+    out = np.empty_like(k)
+    fractional_delay(cube, 3.3, out)
+    np.testing.assert_allclose(out[10:], ((k[10:] - 3.3) / 100.0) ** 3, rtol=1e-12, atol=1e-12)
+
+
 def _drive(t):
     # a sum of incommensurate sines, faded in, to +-45 V (an analytic input, read at any instant)
     fade = np.clip(t / 3.0, 0.0, 1.0)
@@ -52,8 +74,8 @@ def test_clock_skew_named_delay_with_its_drift(record):
     rep = diagnose(t, v, y, progress=False)
     assert rep.effects == ["delay"]
     desc = next(p for p in rep.model.describe() if p["kind"] == "delay_drift")
-    # the delay at both ends within 0.5 sample (the part interpolates linearly between
-    # samples, the record was read at the true instants)
+    # the delay at both ends within 0.5 sample (the part interpolates between samples,
+    # the record was read at the true instants)
     assert desc["delay_samples"] == pytest.approx(d0, abs=0.5)
     assert desc["delay_end_samples"] == pytest.approx(d1, abs=0.5)
     assert rep.rms_heldout <= 1.5 * sigma and rep.verdict == "explained"

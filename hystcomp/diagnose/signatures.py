@@ -229,7 +229,8 @@ def evidence(rec, e, pred, sigma, only=None):
             put("rate_dependence", sig, 0.0, PARTIAL, False,
                 f"untested: {100 * rec.peak_share:.0f} % of the input's power lies within a factor 1.5 of "
                 f"{rec.f_peak:.3g} Hz; at one rate of excitation rate dependence cannot be told from the loop's "
-                "shape (add sines at other frequencies)")
+                "shape, and a lag shifts the phase as a dead time does, so a delay named here may be a lag "
+                "(add sines at other frequencies)")
         else:
             def rate_columns():
                 r = rec.rate / (np.max(np.abs(rec.rate)) or 1.0)

@@ -180,16 +180,32 @@ def core_columns(x, r, beta, inv_dt, rho, ql, qr, bl, br, preload, out, shift=0.
 
 @njit(cache=True, nogil=True)
 def fractional_delay(x, d, out):
-    """out[k] = x at sample k - d (linear interpolation; x[0] before the start):
-    :func:`drifting_delay` with the same delay at both ends."""
+    """out[k] = x at sample k - d (cubic Lagrange interpolation; x[0] before
+    the start): :func:`drifting_delay` with the same delay at both ends."""
     drifting_delay(x, d, d, out)
+
+
+@njit(cache=True, inline="always")
+def _sample(x, i):
+    """x[i], x[0] before the start and x[-1] after the end."""
+    if i <= 0:
+        return x[0]
+    if i >= x.size:
+        return x[x.size - 1]
+    return x[i]
 
 
 @njit(cache=True, nogil=True)
 def drifting_delay(x, d0, d1, out):
-    """out[k] = x at sample k - d_k, d_k = d0 + (d1 - d0) k / (n - 1) (linear
-    interpolation; x[0] before the start): a dead time that changes linearly
-    along the record."""
+    """out[k] = x at sample k - d_k, d_k = d0 + (d1 - d0) k / (n - 1): a dead
+    time that changes linearly along the record (x[0] before the start).
+
+    Between samples the input is read by cubic Lagrange interpolation on the
+    four nearest samples (Laakso, Valimaki, Karjalainen & Laine, IEEE Signal
+    Processing Magazine 13 (1996) 30, 'Splitting the unit delay'): its gain at 0.05 cycles a
+    sample is 0.9998 half-way between samples, where linear interpolation's
+    is cos(pi 0.05) = 0.988, a low-pass that a dead time does not have.  It
+    is exact on cubic polynomials and on the samples themselves."""
     n = x.size
     for k in range(n):
         d = d0 + (d1 - d0) * k / (n - 1) if n > 1 else d0
@@ -199,10 +215,14 @@ def drifting_delay(x, d0, d1, out):
         else:
             j = int(math.floor(s))
             f = s - j
-            if j + 1 < n:
-                out[k] = (1.0 - f) * x[j] + f * x[j + 1]
+            if f == 0.0:
+                out[k] = _sample(x, j)
             else:
-                out[k] = x[n - 1]
+                a = f + 1.0
+                b = f - 1.0
+                c = f - 2.0
+                out[k] = (-f * b * c / 6.0 * _sample(x, j - 1) + a * b * c / 2.0 * _sample(x, j)
+                          - a * f * c / 2.0 * _sample(x, j + 1) + a * f * b / 6.0 * _sample(x, j + 2))
 
 
 @njit(cache=True, nogil=True)

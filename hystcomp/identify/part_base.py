@@ -162,7 +162,7 @@ class Part:
     order = 50
     #: the diagnosis' tie-break between parts that fit equally well with as
     #: many nonlinear parameters: the lower rank is named (see
-    #: :data:`hystcomp.diagnose.search.PARSIMONY`)
+    #: :data:`hystcomp.diagnose.revise.PARSIMONY`)
     occam_rank = 1
 
     def parameters(self, ctx, kinds):

@@ -20,14 +20,16 @@ __all__ = ["Delay", "DriftingDelay", "InputLag", "SlewLimit", "OutputLag", "Outp
 # ----------------------------------------------------------------------------
 @register
 class Delay(Part):
-    """Dead time before the hysteresis, in fractional samples (linear
-    interpolation): ``x(t - delay)``.
+    """Dead time before the hysteresis, in fractional samples (cubic Lagrange
+    interpolation between samples, which keeps the input's shape: linear
+    interpolation would also low-pass it, by up to 1.2 % at 0.05 cycles a
+    sample): ``x(t - delay)``.
 
     Examples
     --------
     >>> ctx = Context(np.arange(5.0), 1.0, 0.0, 1.0, 5.0)
     >>> Delay().transform(ctx.x, {"delay": 1.5}, ctx).tolist()
-    [0.0, 0.0, 0.5, 1.5, 2.5]
+    [0.0, 0.0, 0.4375, 1.5, 2.5]
     """
 
     effect = "delay"
@@ -64,8 +66,8 @@ class Delay(Part):
 @register
 class DriftingDelay(Delay):
     """A dead time that changes linearly along the record, from ``delay`` samples
-    at the first sample to ``delay_end`` at the last (fractional samples, linear
-    interpolation): a sensor recorded on its own clock, which runs fast or slow
+    at the first sample to ``delay_end`` at the last (fractional samples, cubic
+    Lagrange interpolation): a sensor recorded on its own clock, which runs fast or slow
     against the drive's by a frequency offset ``eps`` (crystal tolerances are
     1e-5 ... 1e-3), so the two drift apart by ``eps`` samples a sample (the
     reason for IEEE 1588 time synchronisation).  Parameters: ``delay``,
@@ -75,7 +77,7 @@ class DriftingDelay(Delay):
     --------
     >>> ctx = Context(np.arange(5.0), 1.0, 0.0, 1.0, 5.0)
     >>> DriftingDelay().transform(ctx.x, {"delay": 0.0, "delay_end": 2.0}, ctx).tolist()
-    [0.0, 0.5, 1.0, 1.5, 2.0]
+    [0.0, 0.4375, 1.0, 1.5, 2.0]
     """
 
     kind = "delay_drift"
