@@ -220,7 +220,10 @@ def evidence(rec, e, pred, sigma, only=None):
                     "present": present, "testable": bool(testable), "where": WHERE[name],
                     "reading": reading or (("present: " if present else "absent: ") + signature), **extra}
 
-    if only is None or only in ('rate_dependence',):
+    # a dead time and a lag leave the same residual to first order (-T dH/dv dv/dt):
+    # each of the two tests is computed with the other, and reads it (below)
+    pair = only is None or only in ("rate_dependence", "delay")
+    if pair:
         # -- rate dependence: residual against the input rate beyond static branch functions
         sig = "residual against the input rate |dv/dt| beyond static functions of the input on each branch"
         if not timed:
@@ -238,7 +241,7 @@ def evidence(rec, e, pred, sigma, only=None):
 
             put("rate_dependence", sig, _partial_fixed(e, rec, ("rate",), rate_columns) / sigma, PARTIAL)
 
-    if only is None or only in ('delay',):
+    if pair:
         # -- delay: residual along the derivative of the prediction
         sig = "residual along the model output's time derivative (a shift in time), where the output moves"
         if not timed:
@@ -403,7 +406,29 @@ def evidence(rec, e, pred, sigma, only=None):
 
         put("initial_state", sig, _partial_fixed(e, rec, ("initial_state",), start_columns) / sigma, START,
             first_excursion=k1)
+    if pair:
+        _shift_or_lag(ev)
     return ev
+
+
+def _shift_or_lag(ev):
+    """A dead time T and a lag tau leave the same residual to first order in
+    the frequency (e^(-sT) and 1 / (1 + s tau) both start 1 - s T), so the
+    delay's test (along the model output's derivative) and the rate
+    dependence's (against the input rate) see one misfit through different
+    columns: when both are testable, either present makes both present, and
+    the fits tell them apart (the dead time, with fewer parameters, on a
+    near tie).  A record driven at one frequency leaves rate dependence
+    untested, and the delay on its own test."""
+    d, r = ev["delay"], ev["rate_dependence"]
+    if not (d["testable"] and r["testable"]):
+        return
+    for mine, other, name in ((d, r, "rate dependence"), (r, d, "delay")):
+        if other["present"] and not mine["present"]:
+            mine["present"] = True
+            mine["reading"] = (f"present through the {name}'s test ({other['statistic']:.2f} > "
+                               f"{other['threshold']:.2f}): a dead time and a lag leave the same residual to first "
+                               f"order; its own, {mine['signature']}, is {mine['statistic']:.2f}")
 
 
 def _merged_holds(rec):
