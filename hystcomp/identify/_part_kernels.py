@@ -201,11 +201,12 @@ def drifting_delay(x, d0, d1, out):
     time that changes linearly along the record (x[0] before the start).
 
     Between samples the input is read by cubic Lagrange interpolation on the
-    four nearest samples (Laakso, Valimaki, Karjalainen & Laine, IEEE Signal
-    Processing Magazine 13 (1996) 30, 'Splitting the unit delay'): its gain at 0.05 cycles a
-    sample is 0.9998 half-way between samples, where linear interpolation's
-    is cos(pi 0.05) = 0.988, a low-pass that a dead time does not have.  It
-    is exact on cubic polynomials and on the samples themselves."""
+    four nearest samples (Laakso, Valimaki, Karjalainen & Laine, IEEE
+    Signal Processing Magazine 13 (1996) 30, "Splitting the unit delay"):
+    its gain at 0.05 cycles a sample is 0.9998 half-way between samples,
+    where linear interpolation's is cos(pi 0.05) = 0.988, a low-pass that a
+    dead time does not have.  It is exact on cubic polynomials and on the
+    samples themselves (at f = 0 the weights are 0, 1, 0, 0)."""
     n = x.size
     for k in range(n):
         d = d0 + (d1 - d0) * k / (n - 1) if n > 1 else d0
@@ -215,14 +216,11 @@ def drifting_delay(x, d0, d1, out):
         else:
             j = int(math.floor(s))
             f = s - j
-            if f == 0.0:
-                out[k] = _sample(x, j)
-            else:
-                a = f + 1.0
-                b = f - 1.0
-                c = f - 2.0
-                out[k] = (-f * b * c / 6.0 * _sample(x, j - 1) + a * b * c / 2.0 * _sample(x, j)
-                          - a * f * c / 2.0 * _sample(x, j + 1) + a * f * b / 6.0 * _sample(x, j + 2))
+            a = f + 1.0
+            b = f - 1.0
+            c = f - 2.0
+            out[k] = (-f * b * c / 6.0 * _sample(x, j - 1) + a * b * c / 2.0 * _sample(x, j)
+                      - a * f * c / 2.0 * _sample(x, j + 1) + a * f * b / 6.0 * _sample(x, j + 2))
 
 
 @njit(cache=True, nogil=True)
