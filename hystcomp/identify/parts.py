@@ -16,7 +16,8 @@ in one of five places (its ``slot``), applied in this order:
     :class:`Saturation`: envelopes, eq. 23; :class:`RateThresholds`:
     ``r_i + beta |dv/dt|``; :class:`ViscousPlays`: plays relaxing at a
     finite rate; :class:`ActivatedPlays`: relaxing by Eyring's sinh law;
-    :class:`InitialState`: a preload history; :class:`RingingPreload`: one ending in a decaying alternation);
+    :class:`InitialState`: a preload history; :class:`RingingPreload`: one ending in a decaying alternation;
+    :class:`StaircasePreload`: one of four free reversals);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
     a linear stage after the hysteresis; :class:`GainDrift`,
@@ -47,7 +48,7 @@ importing this module registers every built-in part, in one place.
 
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
 from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
-                         RateThresholds, RingingPreload, Saturation, ViscousPlays)
+                         RateThresholds, RingingPreload, Saturation, StaircasePreload, ViscousPlays)
 from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
@@ -55,6 +56,6 @@ from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
            "LevelThresholds",
-           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

@@ -11,7 +11,7 @@ from ._part_kernels import core_columns
 from .part_base import Context, Parameter, Part, creep_time_range, register  # noqa: F401 (Context: the examples)
 
 __all__ = ["PICore", "Offset", "RateThresholds", "ViscousPlays", "ActivatedPlays", "Asymmetry", "LevelThresholds",
-           "Saturation", "InitialState", "RingingPreload"]
+           "Saturation", "InitialState", "RingingPreload", "StaircasePreload"]
 
 
 # ----------------------------------------------------------------------------
@@ -435,3 +435,63 @@ class RingingPreload(InitialState):
 
     def describe(self, values):
         return dict(super().describe(values), ringing=float(f"{values['ringing']:.4g}"))
+
+
+@register
+class StaircasePreload(InitialState):
+    """Memory left by a search that narrows onto a point: the preload
+    history virgin -> ``u1`` -> ``u2`` -> ``u3`` -> ``u4`` -> the record's
+    first sample, four free turning points.  A stochastic-approximation
+    search (Kiefer and Wolfowitz 1952), a converter's self-test staircase or
+    a demagnetising sequence cut short leaves its plays on the branches of
+    several reversals of shrinking size, not of one reversal pair; the
+    two-point preload of :class:`InitialState` draws only the widest of them,
+    and on records whose widest excursion comes late the rest of the misfit
+    went to a drift (HOLDOUT28's Kiefer-Wolfowitz memory, round 30).  Unlike
+    :class:`RingingPreload` the reversals are free, not a geometric
+    alternation about the first input.  Each point is searched within a
+    quarter of the input span beyond the record's input range, without the
+    two-point preload's wider reach.  The search starts from ``u1`` at
+    either end of the range and, for ``f`` of 0.3 and 0.7, ``u2 = x0 + f
+    (other end - x0)``, ``u3 = x0 + f (u1 - x0) / 2``, ``u4 = x0 + f (other
+    end - x0) / 4`` (``x0`` the first input): reversals that shrink about
+    the first input.
+
+    Examples
+    --------
+    >>> ctx = Context(np.zeros(3), None, 0.0, 1.0, None)
+    >>> opts = {}
+    >>> StaircasePreload().core_options({"u1": 0.9, "u2": -0.5, "u3": 0.3, "u4": -0.1}, ctx, opts)
+    >>> opts["preload"]
+    [0.9, -0.5, 0.3, -0.1]
+    """
+
+    kind = "staircase_preload"
+    order = 92
+    description = "preload history of four free reversals (the plays' initial state after a search or self-test)"
+    #: the preload's turning points, in order
+    POINTS = ("u1", "u2", "u3", "u4")
+
+    def parameters(self, ctx, kinds):
+        lo, hi = float(ctx.x.min()), float(ctx.x.max())
+        w = hi - lo
+        return [Parameter(name, start, lo - 0.25 * w, hi + 0.25 * w, False)
+                for name, start in zip(self.POINTS, (hi, lo, hi, lo))]
+
+    def initial_values(self, ctx, kinds):
+        lo, hi = float(ctx.x.min()), float(ctx.x.max())
+        x0 = float(ctx.x[0])
+        out = []
+        for u1 in (lo, hi):
+            other = hi if u1 == lo else lo
+            for f in (0.3, 0.7):
+                out.append({"u1": u1, "u2": x0 + f * (other - x0), "u3": x0 + 0.5 * f * (u1 - x0),
+                            "u4": x0 + 0.25 * f * (other - x0)})
+        return out
+
+    def core_options(self, values, ctx, options):
+        options["preload"] = [values[name] for name in self.POINTS]
+
+    def describe(self, values):
+        return {"part": self.description,
+                "preload_scaled": [float(f"{values[name]:.4g}") for name in self.POINTS]}
