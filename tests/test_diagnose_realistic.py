@@ -1,6 +1,6 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
-Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 315 since round 31): it runs with
+Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315): it runs with
 ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
