@@ -340,6 +340,8 @@ class InitialState(Part):
     slot = "core"
     order = 90
     description = "preload history before the record (the plays' initial state)"
+    #: the preload's turning points, in order
+    POINTS = ("u1", "u2")
 
     def parameters(self, ctx, kinds):
         lo, hi = float(ctx.x.min()), float(ctx.x.max())
@@ -359,11 +361,11 @@ class InitialState(Part):
         return out
 
     def core_options(self, values, ctx, options):
-        options["preload"] = [values["u1"], values["u2"]]
+        options["preload"] = [values[name] for name in self.POINTS]
 
     def describe(self, values):
-        return {"part": self.description, "preload_scaled": [float(f"{values['u1']:.4g}"),
-                                                            float(f"{values['u2']:.4g}")]}
+        return {"part": self.description,
+                "preload_scaled": [float(f"{values[name]:.4g}") for name in self.POINTS]}
 
 
 @register
@@ -469,7 +471,6 @@ class StaircasePreload(InitialState):
     kind = "staircase_preload"
     order = 92
     description = "preload history of four free reversals (the plays' initial state after a search or self-test)"
-    #: the preload's turning points, in order
     POINTS = ("u1", "u2", "u3", "u4")
 
     def parameters(self, ctx, kinds):
@@ -488,10 +489,3 @@ class StaircasePreload(InitialState):
                 out.append({"u1": u1, "u2": x0 + f * (other - x0), "u3": x0 + 0.5 * f * (u1 - x0),
                             "u4": x0 + 0.25 * f * (other - x0)})
         return out
-
-    def core_options(self, values, ctx, options):
-        options["preload"] = [values[name] for name in self.POINTS]
-
-    def describe(self, values):
-        return {"part": self.description,
-                "preload_scaled": [float(f"{values[name]:.4g}") for name in self.POINTS]}
