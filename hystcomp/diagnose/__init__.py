@@ -15,7 +15,8 @@ effect             parts tried
 rate_dependence    lag after the hysteresis, resonance after it, lag before it,
                    rate-dependent thresholds ``r_i + beta |dv/dt|``
 creep              lags of the input on a log grid of time constants
-drift              ``a t + b (1 - exp(-t/tau))``
+drift              ``a t + b (1 - exp(-t/tau))``; broken lines in time of 6
+                   segments (no set shape) and of 24 (events)
 gain_drift         gain ``1 + g (t/T - 1/2)`` on the hysteresis
 asymmetry          asymmetric mGPI envelopes (with saturation: two saturating
                    envelopes)

@@ -24,7 +24,7 @@ in one of five places (its ``slot``), applied in this order:
     :class:`SlowGainDrift`);
 ``additive``
     adds columns of its own (:class:`Creep`, :class:`Drift`,
-    :class:`SlowDrift`, and the offset);
+    :class:`SlowDrift`, :class:`EventDrift`, and the offset);
 ``output``
     maps the linear prediction (:class:`OutputClip`: clipping of the output
     side; :class:`OutputTanh`, :class:`OutputAlgebraic`: smooth saturation),
@@ -50,12 +50,12 @@ from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa:
 from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, RingingPreload, Saturation, StaircasePreload, ViscousPlays)
 from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
-                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift,
+                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift, EventDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
            "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
-           "Drift", "SlowDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
+           "Drift", "SlowDrift", "EventDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]
