@@ -55,7 +55,9 @@ def test_a_settling_offset_is_named_drift_and_held_after_it_settles():
     rep = diagnose(t, v, y, progress=False)
     assert rep.effects == ["drift"], rep.report()
     kinds = [d["kind"] for d in rep.model.describe()]
-    assert "slow_drift" in kinds, kinds
+    # a broken line in time, held at its last level after the fitted part: the six segments
+    # until round 32; since then the 24 of the drift made of events (the 4 s step is one event)
+    assert "event_drift" in kinds, kinds
     # within 1.5 noise floors (the play density is not the core's 20 plays exactly)
     assert rep.verdict == "explained" and rep.rms_heldout < 1.5 * rep.noise_floor, rep.report()
     assert _rms_held(rep, y, v) == pytest.approx(rep.rms_heldout, rel=1e-9)
