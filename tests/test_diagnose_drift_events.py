@@ -30,12 +30,13 @@ OPEN_FOR = 2.5
 
 
 def _lag(x, dt, tau):
-    """A first-order lag of the samples x (zero-order hold), exact per sample."""
-    a = np.exp(-dt / tau)
+    """A first-order lag of the samples x (zero-order hold), exact per sample; `tau` a
+    time constant or one per sample."""
+    a = np.broadcast_to(np.exp(-dt / np.asarray(tau, dtype=float)), np.shape(x))
     out = np.empty_like(x)
     s = 0.0
     for k, xk in enumerate(x):
-        s = a * s + (1.0 - a) * xk
+        s = a[k] * s + (1.0 - a[k]) * xk
         out[k] = s
     return out
 
@@ -57,12 +58,7 @@ def record():
     for a in OPENINGS:
         door[(t >= a) & (t < a + OPEN_FOR)] = 1.0
     # the air: 0.6 s toward 1 while open, 1.5 s back toward 0 when shut
-    air = np.empty_like(t)
-    s = 0.0
-    for i, d in enumerate(door):
-        tau = 0.6 if d else 1.5
-        s += (1.0 - np.exp(-dt / tau)) * (d - s)
-        air[i] = s
+    air = _lag(door, dt, np.where(door > 0, 0.6, 1.5))
     bracket = _lag(air, dt, 1.2)
     drift = 0.06 * np.ptp(h) * bracket
     sigma = 0.002 * np.ptp(h)
