@@ -136,8 +136,10 @@ def lag_bank(v, time_constants, dt, state=None):
 class LinearStage:
     """A discrete SISO linear stage ``x+ = A x + B u, y = C x + D u`` at step `dt`.
 
-    Use the factories :meth:`lag` (first-order lag) and :meth:`resonance`
-    (lightly damped second-order mode), both with unit static gain.  In
+    Use the factories :meth:`lag` (first-order lag), :meth:`resonance`
+    (lightly damped second-order mode) and :meth:`recoil` (the stroke read
+    from the ground while the base recoils on its mount), all with unit
+    static gain.  In
     series after a hysteresis model it makes the output depend on the input's
     rate: loops widen and tilt with frequency, steps overshoot.
 
@@ -281,6 +283,68 @@ class LinearStage:
         Bd, Cd, Dd = Bd[:, 0], Cd[0], Dd[0, 0]
         return cls(Ad, Bd, Cd, float(Dd), dt, kind="resonance",
                    parameters={"frequency": f, "damping": z})
+
+    @classmethod
+    def recoil(cls, frequency, damping, share, dt):
+        """The stroke read from the ground while the stage's base recoils on a
+        compliant mount: ``y = u - share * s^2 / (s^2 + 2 zeta w s + w^2) u``
+        (w = 2 pi frequency), discretised by the bilinear rule with the
+        frequency prewarped, as :meth:`resonance`; static gain 1.
+
+        A stage of mass m pushing a base of mass M that sits on a mount of
+        stiffness k and damping c: the base obeys ``(M + m) x_b'' + c x_b' +
+        k x_b = -m u''`` (Newton's law for the two masses, the stroke u
+        between them), so the ground sees ``u + x_b``, with ``share = m /
+        (M + m)``, ``w^2 = k / (M + m)``, ``2 zeta w = c / (M + m)``.  Well
+        below the mount's mode the reading is the stroke (no first-order
+        phase: unlike a lag or a dead time); above it a share of the stroke
+        is lost to the base's recoil, and near it the base rings.  Reaction
+        forces exciting the base are a known limit of fast nanopositioners
+        (Devasia, Eleftheriou & Moheimani, IEEE Trans. Control Syst.
+        Technol. 15 (2007) 802, section II).
+
+        Parameters
+        ----------
+        frequency : float
+            The mount's natural frequency [Hz] (stage and base on the mount),
+            below the Nyquist frequency ``0.5 / dt``.
+        damping : float
+            The mount's damping ratio zeta > 0.
+        share : float
+            The stage's share of the moving mass, m / (M + m), in (0, 1).
+        dt : float
+            Sampling time [s].
+
+        Returns
+        -------
+        LinearStage
+
+        Examples
+        --------
+        >>> st = LinearStage.recoil(5.0, 0.1, 0.2, dt=1e-3)
+        >>> y = st.simulate(np.ones(4000))
+        >>> round(float(y[0]), 2), round(float(y.max()), 2), round(float(y[-1]), 4), round(st.dc_gain(), 6)
+        (0.8, 1.15, 1.0, 1.0)
+        """
+        f = as_scalar(frequency, "frequency", positive=True)
+        z = as_scalar(damping, "damping", positive=True)
+        a = as_scalar(share, "share", positive=True)
+        dt = as_scalar(dt, "dt", positive=True)
+        if f >= 0.5 / dt:
+            raise ValueError(f"Parameter frequency is {f} Hz but should be below the Nyquist "
+                             f"frequency {0.5 / dt} Hz of dt = {dt}")
+        if a >= 1.0:
+            raise ValueError(f"Parameter share is {a} but should be below 1 (the stage's share "
+                             "of the moving mass, m / (M + m))")
+        w = 2.0 / dt * math.tan(math.pi * f * dt)
+        from scipy.signal import cont2discrete
+
+        # 1 - a s^2/(s^2 + 2 z w s + w^2) = (1 - a) + a (2 z w s + w^2)/(s^2 + 2 z w s + w^2)
+        sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * z * w]]), np.array([[0.0], [1.0]]),
+                 np.array([[a * w * w, a * 2 * z * w]]), np.array([[1.0 - a]]))
+        Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
+        return cls(Ad, Bd[:, 0], Cd[0], float(Dd[0, 0]), dt, kind="recoil",
+                   parameters={"frequency": f, "damping": z, "share": a})
 
     def default_state(self):
         """At rest with zero input and output."""
@@ -469,4 +533,8 @@ class LinearStage:
             p = self.parameters
             return (f"LinearStage.resonance(frequency={p['frequency']!r}, damping={p['damping']!r}, "
                     f"dt={self.dt!r})")
+        if self.kind == "recoil":
+            p = self.parameters
+            return (f"LinearStage.recoil(frequency={p['frequency']!r}, damping={p['damping']!r}, "
+                    f"share={p['share']!r}, dt={self.dt!r})")
         return f"LinearStage(n_states={self.n_states}, dt={self.dt!r})"

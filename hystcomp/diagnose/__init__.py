@@ -13,7 +13,8 @@ with the one constrained least-squares solve of :mod:`hystcomp.identify`:
 effect             parts tried
 =================  =============================================================
 rate_dependence    lag after the hysteresis, resonance after it, lag before it,
-                   rate-dependent thresholds ``r_i + beta |dv/dt|``
+                   rate-dependent thresholds ``r_i + beta |dv/dt|``, the base
+                   recoiling on its mount (the stroke read from the ground)
 creep              lags of the input on a log grid of time constants
 drift              ``a t + b (1 - exp(-t/tau))``; broken lines in time of 6
                    segments (no set shape) and of 24 (events)

@@ -7,9 +7,9 @@ import textwrap
 
 import numpy as np
 
-from .record import BEYOND, caution
+from .record import BEYOND, HOLDS_CARRIED, caution
 
-SCHEMA_VERSION = 16
+SCHEMA_VERSION = 17
 
 
 def _jsonable(x):
@@ -336,6 +336,10 @@ class Diagnosis:
                  + (f"({self._pct(s):.3g} %: the diagnosis's resolution, the record shows no noise above it)"
                     if self.noise_info["method"] == "resolution" else
                     f"({self._pct(s):.3g} %, from the {self.noise_info['method'].replace('_', '-')} part)")]
+        hc = self.noise_info.get("holds_carried_structure")
+        if hc is not None:
+            lines.append(f"  noise floor: the output's scatter during the holds ({hc['scatter']:.4g}) was structure, "
+                         f"not noise: a model left {hc['rms_heldout']:.4g} held out, below {HOLDS_CARRIED} of it")
         if self.rest is not None and self.rest.get("other") is not None:
             lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():

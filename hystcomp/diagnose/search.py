@@ -11,7 +11,7 @@ from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
 from .off_centre import off_centre_test
-from .record import BEYOND, N_BLOCKS, Record, caution, noise_floor
+from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carried_structure, noise_floor
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
@@ -404,6 +404,27 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                     f"{told['training_bic_change'][told['held_out_chose']]:.1f}")
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
+        again = holds_carried_structure(noise_info, rms_val(cur), rec.y_span, rec.n)
+        if again is not None:
+            # the holds' scatter was structure the model now reproduces (a mount
+            # ringing into short holds): the high-frequency floor, and the model
+            # refitted to it (its parameters were searched against the higher floor)
+            say(f"noise floor: the held-out RMS {rms_val(cur):.4g} is below {HOLDS_CARRIED} of the holds' scatter "
+                f"{sigma:.4g}, so the holds carried structure; the floor is the high-frequency part's, "
+                f"{again[0]:.4g}")
+            sigma, noise_info = again
+            ctx.noise = sigma
+            se = noise_info["relative_standard_error"]
+            explained_limit = EXPLAINED * (1.0 - se)
+            n_par = len(struct.parameters(ctx))
+            if n_par:
+                joint = vp.optimise(struct, cur.values, free=None, max_evaluations=10 * n_par)
+                if joint.rss < cur.rss and rms_val(joint) <= rms_val(cur):
+                    cur = joint
+                    step_preds[-1] = cur.prediction
+                    after = rms_val(cur)
+                    steps[-1].update(rms_after=after, rms_after_pct=100.0 * after / rec.y_span)
+                    say(f"refitted to the new floor: held-out RMS {after:.4g}")
         ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
         if rms_val(cur) <= explained_limit * sigma and not any(x["present"] for x in ev.values()):
             stopped = "the residual is at the noise floor with no signature left"

@@ -267,7 +267,7 @@ def register(cls):
     Examples
     --------
     >>> sorted(k for k, c in PARTS.items() if c.effect == "rate_dependence")
-    ['activated_plays', 'input_lag', 'input_slew', 'output_lag', 'output_resonance', 'rate_term', 'rate_thresholds', 'viscous_plays']
+    ['activated_plays', 'input_lag', 'input_slew', 'mount_recoil', 'output_lag', 'output_resonance', 'rate_term', 'rate_thresholds', 'viscous_plays']
     """
     if not (isinstance(cls, type) and issubclass(cls, Part)):
         raise TypeError(f"Parameter cls is {cls!r} but should be a subclass of Part")

@@ -20,7 +20,8 @@ in one of five places (its ``slot``), applied in this order:
     :class:`StaircasePreload`: one of four free reversals);
 ``filter``
     maps the core's columns (:class:`OutputLag`, :class:`OutputResonance`:
-    a linear stage after the hysteresis; :class:`GainDrift`,
+    a linear stage after the hysteresis; :class:`MountRecoil`: the base
+    recoiling on its mount; :class:`GainDrift`,
     :class:`SlowGainDrift`);
 ``additive``
     adds columns of its own (:class:`Creep`, :class:`Drift`,
@@ -42,7 +43,8 @@ Adding an effect is one class here (or in your own module) and one call of
 
 The parts live in :mod:`~hystcomp.identify.part_base` (the base class and
 the registry), :mod:`~hystcomp.identify.parts_core`,
-:mod:`~hystcomp.identify.parts_dynamics` and :mod:`~hystcomp.identify.parts_output`;
+:mod:`~hystcomp.identify.parts_dynamics`, :mod:`~hystcomp.identify.parts_mount` and
+:mod:`~hystcomp.identify.parts_output`;
 importing this module registers every built-in part, in one place.
 """
 
@@ -52,10 +54,11 @@ from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThreshold
 from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift, EventDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
+from .parts_mount import MountRecoil  # noqa: F401
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
            "LevelThresholds",
-           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "MountRecoil", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
            "Drift", "SlowDrift", "EventDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]
