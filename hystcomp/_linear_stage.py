@@ -130,6 +130,27 @@ def lag_bank(v, time_constants, dt, state=None):
     return out, x
 
 
+def _prewarped(frequency, dt):
+    """The angular frequency [rad/s] of a continuous mode whose bilinear
+    discretisation at step `dt` has its mode exactly at `frequency` [Hz]."""
+    return 2.0 / dt * math.tan(math.pi * frequency * dt)
+
+
+def _bilinear_mode(cls, w, damping, b, c, d, dt, **kw):
+    """The second-order mode ``x' = [[0, 1], [-w^2, -2 zeta w]] x + b u``,
+    ``y = c x + d u``, discretised by the bilinear rule: a `cls`
+    (:class:`LinearStage`) with keyword arguments `kw`."""
+    from scipy.signal import cont2discrete
+
+    # bilinear rule (I - A dt/2)^-1 (I + A dt/2), ...: scipy.signal.cont2discrete
+    # "bilinear" (what python-control's sample_system calls, without building two
+    # StateSpace objects: a diagnosis builds these stages at every step of its search)
+    sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * damping * w]]), np.array(b, dtype=float)[:, None],
+             np.array([c], dtype=float), np.array([[d]], dtype=float))
+    Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
+    return cls(Ad, Bd[:, 0], Cd[0], float(Dd[0, 0]), dt, **kw)
+
+
 # ----------------------------------------------------------------------------
 # linear dynamic stage
 # ----------------------------------------------------------------------------
@@ -269,20 +290,9 @@ class LinearStage:
         if f >= 0.5 / dt:
             raise ValueError(f"Parameter frequency is {f} Hz but should be below the Nyquist "
                              f"frequency {0.5 / dt} Hz of dt = {dt}")
-        # prewarp so that the discrete mode sits exactly at `frequency`
-        w = 2.0 / dt * math.tan(math.pi * f * dt)
-        from scipy.signal import cont2discrete
-
-        # bilinear rule (I - A dt/2)^-1 (I + A dt/2), ...: scipy.signal.cont2discrete
-        # "bilinear" of the prewarped mode (what python-control's sample_system
-        # calls, without building two StateSpace objects: a diagnosis builds
-        # this stage at every step of its resonance search)
-        sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * z * w]]), np.array([[0.0], [w * w]]),
-                 np.array([[1.0, 0.0]]), np.array([[0.0]]))
-        Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
-        Bd, Cd, Dd = Bd[:, 0], Cd[0], Dd[0, 0]
-        return cls(Ad, Bd, Cd, float(Dd), dt, kind="resonance",
-                   parameters={"frequency": f, "damping": z})
+        w = _prewarped(f, dt)
+        return _bilinear_mode(cls, w, z, [0.0, w * w], [1.0, 0.0], 0.0, dt, kind="resonance",
+                              parameters={"frequency": f, "damping": z})
 
     @classmethod
     def recoil(cls, frequency, damping, share, dt):
@@ -336,15 +346,10 @@ class LinearStage:
         if a >= 1.0:
             raise ValueError(f"Parameter share is {a} but should be below 1 (the stage's share "
                              "of the moving mass, m / (M + m))")
-        w = 2.0 / dt * math.tan(math.pi * f * dt)
-        from scipy.signal import cont2discrete
-
-        # 1 - a s^2/(s^2 + 2 z w s + w^2) = (1 - a) + a (2 z w s + w^2)/(s^2 + 2 z w s + w^2)
-        sys_c = (np.array([[0.0, 1.0], [-w * w, -2 * z * w]]), np.array([[0.0], [1.0]]),
-                 np.array([[a * w * w, a * 2 * z * w]]), np.array([[1.0 - a]]))
-        Ad, Bd, Cd, Dd, _ = cont2discrete(sys_c, dt, method="bilinear")
-        return cls(Ad, Bd[:, 0], Cd[0], float(Dd[0, 0]), dt, kind="recoil",
-                   parameters={"frequency": f, "damping": z, "share": a})
+        w = _prewarped(f, dt)
+        # 1 - a s^2/(s^2 + 2 z w s + w^2) = (1 - a) + a (w^2 + 2 z w s)/(s^2 + 2 z w s + w^2)
+        return _bilinear_mode(cls, w, z, [0.0, 1.0], [a * w * w, a * 2 * z * w], 1.0 - a, dt, kind="recoil",
+                              parameters={"frequency": f, "damping": z, "share": a})
 
     def default_state(self):
         """At rest with zero input and output."""

@@ -2,8 +2,6 @@
 base recoiling on a compliant mount while the stroke is read from the ground.
 """
 
-import math
-
 import numpy as np
 
 from ..effects import LinearStage
@@ -43,10 +41,8 @@ class MountRecoil(OutputResonance):
     description = "the base recoiling on its mount, the stroke read from the ground"
 
     def parameters(self, ctx, kinds):
-        lo, hi = self._band(ctx)
-        return [Parameter("frequency", math.sqrt(lo * hi), lo, hi, True),
-                Parameter("damping", 0.15, 0.01, 1.5, True),
-                Parameter("share", 0.1, 0.005, 0.6, True)]
+        # the resonance's frequency and damping, and the stage's share of the moving mass
+        return super().parameters(ctx, kinds) + [Parameter("share", 0.1, 0.005, 0.6, True)]
 
     def initial_values(self, ctx, kinds):
         lo, hi = self._band(ctx)
