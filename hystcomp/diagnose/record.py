@@ -613,22 +613,28 @@ def noise_floor(rec, residual):
             # vibration): structure, not sensor noise, so the holds do not set the floor
             info["holds_oscillate"] = {"lag_samples": lag, "autocorrelation": round(acf, 4),
                                        "scatter": info.pop("holds")}
-    sigma = max(hf, info.get("holds", 0.0))
-    info["method"] = ("holds" if info.get("holds", 0.0) > hf else "high_frequency")
-    if sigma < RESOLUTION * rec.y_span:
-        # never zero (a noise-free record): the record shows no noise above the
-        # solves' resolution, and the floor is it
-        sigma = RESOLUTION * rec.y_span
-        info["method"] = "resolution"
-        info["relative_standard_error"] = 0.0
-    elif info["method"] == "holds":
+    holds = info.get("holds", 0.0)
+    if holds > hf and not holds < RESOLUTION * rec.y_span:
+        sigma = holds
+        info["method"] = "holds"
         # the median of the holds' scatters: each a standard deviation of m - 3
         # degrees of freedom (relative standard error 1 / sqrt(2 (m - 3))), the
         # median 1.2533 times a mean's standard error
         info["relative_standard_error"] = 1.2533 / math.sqrt(2.0 * dof)
     else:
-        info["relative_standard_error"] = HF_STANDARD_ERROR / math.sqrt(max(residual.size - 2, 1))
+        sigma, info["method"], info["relative_standard_error"] = _high_frequency_floor(hf, residual.size,
+                                                                                      rec.y_span)
     return sigma, info
+
+
+def _high_frequency_floor(hf, n, y_span):
+    """The floor from the high-frequency estimate `hf` of a residual of `n`
+    samples: ``(floor, method, relative standard error)``; never below the
+    solves' resolution (a noise-free record shows no noise above it, and the
+    floor is it)."""
+    if hf < RESOLUTION * y_span:
+        return RESOLUTION * y_span, "resolution", 0.0
+    return hf, "high_frequency", HF_STANDARD_ERROR / math.sqrt(max(n - 2, 1))
 
 
 #: a held-out residual below this share of the holds' scatter shows that the
@@ -683,9 +689,6 @@ def holds_carried_structure(info, rms_heldout, y_span, n):
     new = {k: v for k, v in info.items() if k not in ("holds", "n_holds")}
     new["holds_carried_structure"] = {"scatter": info["holds"], "n_holds": info.get("n_holds"),
                                       "rms_heldout": float(rms_heldout)}
-    sigma = max(float(info["high_frequency"]), RESOLUTION * y_span)
-    new["method"] = "high_frequency" if sigma > RESOLUTION * y_span else "resolution"
-    # the second difference's standard error over the record (as noise_floor's)
-    new["relative_standard_error"] = (HF_STANDARD_ERROR / math.sqrt(max(int(n) - 2, 1))
-                                      if new["method"] == "high_frequency" else 0.0)
+    sigma, new["method"], new["relative_standard_error"] = _high_frequency_floor(float(info["high_frequency"]),
+                                                                                 int(n), y_span)
     return sigma, new
