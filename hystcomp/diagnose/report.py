@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, HOLDS_CARRIED, caution
 
-SCHEMA_VERSION = 17
+SCHEMA_VERSION = 18
 
 
 def _jsonable(x):
@@ -267,7 +267,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 16; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 18; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -281,7 +281,10 @@ class Diagnosis:
         the map's centre held at the offset, 15 ``start_or_trend`` in the
         ``evidence`` of a step where a drift and an initial state gained
         alike held out and the training fit chose between them, 16
-        ``finer_core``).
+        ``finer_core``, 17 ``holds_carried_structure`` in
+        ``noise_floor_method``, 18 ``gain_at_extremes`` ("falls" or "rises")
+        in a present saturation signature's evidence and in
+        ``final_signatures``).
 
         Returns
         -------
@@ -310,7 +313,8 @@ class Diagnosis:
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
             "model": self.model.describe(),
-            "final_signatures": {k: {kk: v[kk] for kk in ("statistic", "threshold", "present", "testable")}
+            "final_signatures": {k: {kk: v[kk] for kk in ("statistic", "threshold", "present", "testable",
+                                                          "gain_at_extremes") if kk in v}
                                  for k, v in self.final_evidence.items()}})
 
     def to_json(self):

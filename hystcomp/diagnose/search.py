@@ -464,6 +464,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                                  f"standard error, {100 * se:.2g} %)")
     for k, x in present.items():
         remaining[k] = f"{x['where']}: {x['signature']} ({x['statistic']:.2f} > {x['threshold']:.2f})"
+        if x.get("gain_at_extremes") == "rises":
+            remaining[k] += "; the gain rises towards the extremes: an expanding map, not a saturation"
     # a residual correlated from sample to sample makes the high-frequency noise
     # floor unreliable (coloured noise or fast structure): then not "explained"
     # unless hold segments confirmed the floor

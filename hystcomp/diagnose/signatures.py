@@ -342,9 +342,19 @@ def evidence(rec, e, pred, sigma, only=None):
             "(v^2, sign(dv/dt) v^2, |v|, sign(dv/dt) v)",
             _partial_fixed(e, rec, ("asymmetry",), lambda: (
                 N1, np.column_stack([xc ** 2, s * xc ** 2, np.abs(xc), s * xc]))) / sigma, PARTIAL)
-        put("saturation", "residual against odd bends of the input (v^3, v^5): a gain change at the extremes",
-            _partial_fixed(e, rec, ("saturation",), lambda: (N1, np.column_stack([xc ** 3, xc ** 5]))) / sigma,
-            PARTIAL)
+        sig = "residual against odd bends of the input (v^3, v^5): a gain change at the extremes"
+        stat = _partial_fixed(e, rec, ("saturation",), lambda: (N1, np.column_stack([xc ** 3, xc ** 5]))) / sigma
+        bend = {}
+        if stat > PARTIAL:
+            # which way the gain changes: a saturation's falls towards the extremes
+            # (the residual follows -v^3 beyond a line); a gain that rises there is
+            # not one, and no saturating part can fit it
+            c3 = np.linalg.lstsq(np.column_stack([N1, xc ** 3]), e, rcond=None)[0][-1]
+            bend = {"gain_at_extremes": "falls" if c3 < 0 else "rises"}
+            if c3 >= 0:
+                bend["reading"] = ("present: " + sig + ", but the gain rises towards the extremes (the residual "
+                                   "follows +v^3): an expanding map, not a saturation")
+        put("saturation", sig, stat, PARTIAL, **bend)
 
     if only is None or only in ('output_saturation',):
         # -- output saturation: the output stays flat at an extreme while the input keeps moving

@@ -605,19 +605,34 @@ class OutputHinge(_OutputBend):
 
 @register
 class OutputCubic(_OutputBend):
-    """Saturation on the output side: ``y = H + c H^3`` (c < 0: the gain falls
-    at the extremes; H the model's output scaled to +-1 over the record).
+    """Saturation on the output side: ``y = H + c H^3`` with ``c <= 0``, the
+    gain falling at the extremes (H the model's output scaled to +-1 over the
+    record).  A positive ``c``, a gain that rises towards both extremes, is
+    not a saturation, so the weight is bounded above by 0: an expanding
+    output map (the odd tail of a smooth sensor law such as a tilted plate's
+    refraction, Snell's law) is left in the residual rather than named.
 
     Examples
     --------
     >>> OutputCubic().power, OutputCubic().effect
     (3, 'saturation')
+    >>> from hystcomp.identify.parts import Context
+    >>> ctx = Context(np.linspace(-1, 1, 5), None, 0.0, 1.0, None)
+    >>> part = OutputCubic()
+    >>> part.attach(type("Identity", (), {"simulate": staticmethod(lambda v: v)})())  # driver: H = v
+    >>> col, lower, upper, names = part.columns({}, ctx)
+    >>> col[:, 0].tolist(), lower.tolist(), upper.tolist()
+    ([-1.0, -0.125, 0.0, 0.125, 1.0], [-inf], [0.0])
     """
 
     effect = "saturation"
     kind = "output_cubic"
     power = 3
-    description = "cubic output map y = H + c H^3"
+    description = "cubic output map y = H + c H^3 (c <= 0)"
+
+    def columns(self, values, ctx):
+        col, lower, _, names = super().columns(values, ctx)
+        return col, lower, np.array([0.0]), names
 
 
 @register
