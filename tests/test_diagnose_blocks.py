@@ -93,3 +93,36 @@ def test_blocks_asked_for_are_used_without_re_judging():
     rep = diagnose(t, v, y, progress=False, held_out="blocks", effects=["drift", "creep"])
     assert rep.effects == ["drift"] and rep.other_split is None
     assert len(rep.held_out_blocks) == N_BLOCKS
+
+
+def _split(verdict, effects, left, remaining=(), blocks=False, rec=None):
+    """A search's result as run_search returns it (only the keys the choice reads)."""
+    rec = rec or Record(np.arange(1000) * 0.01, np.sin(np.arange(1000) / 10), np.cos(np.arange(1000) / 10), 0.3,
+                        "blocks" if blocks else "last")
+    return {"_rec": rec, "verdict": verdict, "effects": list(effects), "tentative": [], "rms_heldout": left,
+            "noise_floor": 1.0, "explained_limit": 1.48, "remaining": {k: "-" for k in remaining},
+            "elapsed": 1.0, "n_evaluations": 10}
+
+
+def test_the_blocks_are_taken_for_a_start_the_end_cannot_test():
+    from hystcomp.diagnose.search import _choose_split
+
+    said = []
+    # the end's held-out part at the floor, only the start's signature left; the blocks
+    # name an initial state and explain the record (HOLDOUT31's shock in transit)
+    end = _split("unexplained", [], 0.99, remaining=("initial_state", "delay"))
+    blocks = _split("explained", ["initial_state"], 0.98, blocks=True)
+    chosen = _choose_split(end, blocks, said.append)
+    assert chosen["verdict"] == "explained" and chosen["effects"] == ["initial_state"]
+    assert chosen["other_split"]["held_out"] == "end" and "cannot test" in chosen["other_split"]["why"]
+    # not when the end's held-out part is above the explained limit: that part is not
+    # explained, whatever the start does
+    chosen = _choose_split(_split("unexplained", [], 1.6, remaining=("initial_state", "held_out")), blocks,
+                           said.append)
+    assert chosen["verdict"] == "unexplained" and chosen["other_split"]["held_out"] == "blocks"
+    # not when no signature stays at the start, nor when the blocks do not explain the
+    # record or name something else
+    for end, blk in ((_split("unexplained", [], 0.99, remaining=("delay",)), blocks),
+                     (end, _split("unexplained", ["initial_state"], 1.2, blocks=True)),
+                     (end, _split("explained", ["asymmetry"], 0.98, blocks=True))):
+        assert _choose_split(end, blk, said.append)["other_split"]["held_out"] == "blocks"

@@ -135,18 +135,40 @@ def _pass_summary(kw):
             "noise_floors_left": kw["rms_heldout"] / kw["noise_floor"]}
 
 
+def _start_left_to_blocks(end, blocks):
+    """Whether the end held out could not judge what it left: its held-out
+    residual is within the explained limit and only the record's start keeps
+    a signature (an initial state whose memory the first full excursion wiped
+    out before the held-out end), while the blocks, held out between fitted
+    stretches from :data:`~hystcomp.diagnose.record.BLOCK_FIRST` of the
+    record on and so nearer its start than the end, name an initial state and
+    explain the record."""
+    at_floor = end["rms_heldout"] <= end["explained_limit"] * end["noise_floor"]
+    return (at_floor and "initial_state" in end["remaining"] and "initial_state" not in end["effects"]
+            and blocks["verdict"] == "explained" and "initial_state" in blocks["effects"])
+
+
 def _choose_split(end, blocks, say):
     """The diagnosis of the two splits to report: the blocks' when they name a
     drift or gain drift (which the end's did not) and leave fewer noise
-    floors; the end's otherwise.  The other is summarised under
-    ``other_split``, with why it was not taken or why it was."""
+    floors, or when the end's held-out part was at the floor with only the
+    record's start left and the blocks name an initial state and explain the
+    record (:func:`_start_left_to_blocks`); the end's otherwise.  The other is
+    summarised under ``other_split``, with why it was not taken or why it
+    was."""
     left_end = end["rms_heldout"] / end["noise_floor"]
     left_blocks = blocks["rms_heldout"] / blocks["noise_floor"]
     named = [e for e in blocks["effects"] if e in INTERPOLATED]
-    take = bool(named) and left_blocks < left_end
+    start = _start_left_to_blocks(end, blocks)
+    take = (bool(named) and left_blocks < left_end) or start
     chosen, other = (blocks, end) if take else (end, blocks)
     summary = _pass_summary(other)
-    if take:
+    if start and not (named and left_blocks < left_end):
+        summary["why"] = (f"with the end held out the held-out part was at {left_end:.2f} noise floors, but a "
+                          "signature stayed at the record's start, which an end held out cannot test; with blocks "
+                          f"spread over the record an initial state is named and {left_blocks:.2f} noise floors "
+                          "are left (explained)")
+    elif take:
         summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors and no "
                           f"{' or '.join(INTERPOLATED)} was named; with blocks spread over the record "
                           f"{', '.join(named)} is named and {left_blocks:.2f} noise floors are left: a time "
