@@ -284,7 +284,9 @@ class Diagnosis:
         ``finer_core``, 17 ``holds_carried_structure`` in
         ``noise_floor_method``, 18 ``gain_at_extremes`` ("falls" or "rises")
         in a present saturation signature's evidence and in
-        ``final_signatures``).
+        ``final_signatures``, and ``instead_of_one_map`` in the ``evidence``
+        of an asymmetry step that replaced a saturation and an asymmetry
+        drawn by one off-centre saturating map).
 
         Returns
         -------

@@ -237,12 +237,18 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     step_preds = [base_pt.prediction] + ([cur.prediction] if cur is not base_pt else [])
     stopped = "no candidate effect to try"
     ev = start_ev
+    # the first step's candidates and the residual it started from (an
+    # off-centre saturating map may be weighed against an asymmetry alone)
+    first = {}
 
     def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None):
         """Record a step: `part` added, fit `pt` of structure `st`, judged against
         the model `prev` before it; the signature is the evidence of the residual
         the step started from (`ev`, `cur`)."""
         before, after = rms_val(prev), rms_val(pt)
+        if not steps:
+            first.update(trials=trials, ev=ev, cur=cur, not_fitted=list(not_fitted), retried=set(retried),
+                         acceptable=acceptable, n_preds=len(step_preds))
         ext = PartsModel(st, pt.values, pt.theta, ctx, pt.names).describe()
         step_ev = {"signature": _signature_of(part, ev, rec, rec.y - cur.prediction, cur.prediction, sigma),
                    "extension": [d for d in ext if d["kind"] == part.kind][0],
@@ -465,6 +471,23 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     if "saturation" in chosen and "asymmetry" in effects and not {"asymmetry"} & (set(chosen) | set(untested)):
         off_centre = _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds,
                                       step_preds, say)
+        alone = (_asymmetry_alone(first, rec, sigma, explained_limit, rms_val, untested)
+                 if chosen == ["saturation", "asymmetry"] else None)
+        if alone is not None:
+            # one map drew both effects, and an asymmetry alone explains the record: one
+            # effect, not two (the first step again, with the asymmetry part)
+            part, st, pt = alone
+            was = (f"saturation + asymmetry from one off-centre saturating map, held-out RMS {rms_val(cur):.4g}; "
+                   f"{part.kind} alone leaves {rms_val(pt):.4g} ({rms_val(pt) / sigma:.2f} noise floors) and no "
+                   "signature: one effect explains the record")
+            say(f"one map: {was}")
+            del steps[:], chosen[:], chosen_kinds[:], step_trials[:], step_preds[first["n_preds"]:]
+            ev, cur, not_fitted, retried = first["ev"], first["cur"], first["not_fitted"], first["retried"]
+            add_step(part, st, pt, cur, first["trials"], {k: tr[3] for k, tr in first["trials"].items()},
+                     acceptable=first["acceptable"])
+            steps[-1]["evidence"]["instead_of_one_map"] = was
+            struct, cur = st, pt
+            off_centre = dict(off_centre, replaced_by=part.kind)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     if finer is None and thresholds is None and rms_val(cur) > explained_limit * sigma:
         # what is left may be the base model's grid of thresholds, not an effect
@@ -571,6 +594,20 @@ def _step_record(effect, before, after, y_span, evidence):
     before and after it (also in % of the output span) and its evidence."""
     return {"effect": effect, "rms_before": before, "rms_after": after, "rms_before_pct": 100.0 * before / y_span,
             "rms_after_pct": 100.0 * after / y_span, "evidence": evidence}
+
+
+def _asymmetry_alone(first, rec, sigma, explained_limit, rms_val, untested):
+    """The best asymmetry part of the first step, ``(part, structure, fit)``,
+    when it alone explains the record: its held-out RMS within the explained
+    limit and no signature present in its residual; else None."""
+    fits = sorted((tr[3], kind) for kind, tr in first.get("trials", {}).items() if tr[0].effect == "asymmetry")
+    if not fits or fits[0][0] > explained_limit * sigma:
+        return None
+    part, st, pt, _ = first["trials"][fits[0][1]]
+    ev = _evidence(rec, rec.y - pt.prediction, pt.prediction, sigma)
+    if any(x["present"] for k, x in ev.items() if k not in untested):
+        return None
+    return part, st, pt
 
 
 def _off_centre_step(vp, ctx, rec, struct, cur, sigma, rms_val, steps, chosen, chosen_kinds, step_preds, say):

@@ -43,7 +43,8 @@ Adding an effect is one class here (or in your own module) and one call of
 
 The parts live in :mod:`~hystcomp.identify.part_base` (the base class and
 the registry), :mod:`~hystcomp.identify.parts_core`,
-:mod:`~hystcomp.identify.parts_dynamics`, :mod:`~hystcomp.identify.parts_mount` and
+:mod:`~hystcomp.identify.parts_dynamics`, :mod:`~hystcomp.identify.parts_mount`,
+:mod:`~hystcomp.identify.parts_slope` and
 :mod:`~hystcomp.identify.parts_output`;
 importing this module registers every built-in part, in one place.
 """
@@ -55,10 +56,11 @@ from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, Inpu
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift, EventDrift,
                              SlewLimit, SlowDrift, SlowGainDrift)
 from .parts_mount import MountRecoil  # noqa: F401
+from .parts_slope import OutputExponentialSlope  # noqa: F401
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
            "LevelThresholds",
            "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "MountRecoil", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
-           "Drift", "SlowDrift", "EventDrift", "SensorDrift", "OutputQuadratic", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
+           "Drift", "SlowDrift", "EventDrift", "SensorDrift", "OutputQuadratic", "OutputExponentialSlope", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]
