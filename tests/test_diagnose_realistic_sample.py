@@ -26,7 +26,7 @@ sys.path.insert(0, os.path.join(HERE, "..", "benchmarks"))
 
 from eval_diagnose_realistic import one_blas_thread, run_one  # noqa: E402
 from realistic import ALL, family  # noqa: E402
-from test_diagnose_realistic import _over, _table  # noqa: E402
+from test_diagnose_realistic import NOT_PI_CLEAN, _over, _table  # noqa: E402
 
 pytestmark = pytest.mark.realistic
 SEED = 0
@@ -69,8 +69,17 @@ def test_right_verdict_no_worse_than_measured(rows):
 
 
 def test_no_effect_named_on_clean_records(rows):
-    named = [r for r in rows if r["clean"] and (r["effects"] or r["verdict"] != "explained")]
+    named = [r for r in rows if r["clean"] and (r["effects"] or (r["verdict"] != "explained"
+                                                                  and r["case"] not in NOT_PI_CLEAN))]
     assert not named, _table(named)
+
+
+def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows):
+    # round 34: a saturation (a cubic output map, 22 % of the base misfit above the noise) was
+    # named on it at seed 0 until naming on an unexplained record asked for 40 %
+    dahl = [r for r in rows if r["case"] in NOT_PI_CLEAN]
+    assert len(dahl) == len(NOT_PI_CLEAN)
+    assert all(not r["effects"] and r["verdict"] == "unexplained" for r in dahl), _table(dahl)
 
 
 def test_explained_means_within_the_noise(rows):
