@@ -6,6 +6,7 @@ import time
 import numpy as np
 
 from ..identify.parts import PARTS
+from ..identify.parts_output import one_sided
 from ..identify.parallel_fits import optimise_all
 from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
@@ -288,6 +289,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             if cls.effect in chosen or (cls.slot == "output" and struct.output_part() is not None):
                 continue
             if getattr(cls, "needs_output_map", False) and struct.output_part() is None:
+                continue
+            if getattr(cls, "two_sided_only", False) and one_sided(ctx):
                 continue
             part = cls()
             part.prepare(rec.y, ctx)

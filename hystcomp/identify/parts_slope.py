@@ -20,6 +20,13 @@ The weight ``w`` is fitted (its sign says which end is stiffer) and ``k``
 (:data:`SLOPE_RATE` bounds it) is searched.  Whatever ``w`` and ``k``, the
 slope is monotone in ``z``: the part cannot flatten both ends, so it does
 not stand in for a saturation (gain falling towards both extremes).
+
+On a one-sided record (a unipolar stroke, :func:`~hystcomp.identify.
+parts_output.one_sided`) only the end away from rest can bend, and a slope
+that falls towards it is read as that end saturating (the saturating output
+maps' centre may sit at the rest end there), so the part is tried on
+two-sided records only (``two_sided_only``): in round 34's evaluation it took
+HOLDOUT8's soft clip under a unipolar sine at two seeds, a near tie.
 """
 
 import numpy as np
@@ -64,6 +71,8 @@ class OutputExponentialSlope(_OutputBend):
     effect = "asymmetry"
     kind = "output_exp_slope"
     order = 41
+    #: tried on two-sided records only (see the module's docstring)
+    two_sided_only = True
     description = "output map whose slope changes exponentially across the stroke y = H + w (e^{kz} - 1 - kz)/k^2"
 
     def parameters(self, ctx, kinds):
