@@ -34,8 +34,9 @@ HOLDOUT28 was run once for the thirtieth round's measurement (27 of 30 right) an
 HOLDOUT29 was run once for the thirty-first round's measurement (28 of 30 right) and is part of ALL since.
 HOLDOUT30 was run once for the thirty-second round's measurement (23 of 30 right) and is part of ALL since.
 HOLDOUT31 was run once for the thirty-third round's measurement (21 of 30 right) and is part of ALL since.
+HOLDOUT32 was run once for the thirty-fourth round's measurement (15 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout31|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout32|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 
