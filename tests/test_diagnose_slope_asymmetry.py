@@ -93,6 +93,7 @@ def test_an_off_centre_map_gives_way_to_an_asymmetry_that_explains_alone():
     assert d.effects == ["asymmetry"] and d.verdict == "explained"
     ev = d.to_dict()["steps"][0]["evidence"]
     assert "one off-centre saturating map" in ev["instead_of_one_map"]
+    assert "  instead of saturation + asymmetry from one off-centre saturating map" in d.report()
     # the model returned is the one reported
     held = ~d._rec.train
     assert np.sqrt(np.mean((rec.y - d.model.simulate(rec.v))[held] ** 2)) == pytest.approx(d.rms_heldout, rel=1e-9)

@@ -356,6 +356,8 @@ class Diagnosis:
             lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+            if st["evidence"].get("instead_of_one_map"):
+                lines.append("  instead of " + st["evidence"]["instead_of_one_map"])
             loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
             if loss is not None:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
