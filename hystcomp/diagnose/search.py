@@ -496,7 +496,6 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                      acceptable=first["acceptable"])
             steps[-1]["evidence"]["instead_of_one_map"] = was
             struct, cur = st, pt
-            off_centre = dict(off_centre, replaced_by=part.kind)
     final_ev = _evidence(rec, rec.y - cur.prediction, cur.prediction, sigma)
     if finer is None and thresholds is None and rms_val(cur) > explained_limit * sigma:
         # what is left may be the base model's grid of thresholds, not an effect
