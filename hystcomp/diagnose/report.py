@@ -137,11 +137,12 @@ class Diagnosis:
     tentative : list of str
         Extensions the search added but does not name, because the model
         with them still leaves more than 3 noise floors and they removed less
-        than 90 % of the base model's misfit above the noise, or it leaves
-        more than 10 noise floors whatever they removed on a record whose
-        holds confirm the floor (the misfit is
-        mostly of a kind no part describes; ``remaining`` says so under
-        ``out_of_vocabulary``).  Empty otherwise.
+        than 90 % of the base model's misfit above the noise, or leaves the
+        record unexplained and they removed less than 40 %, or it leaves
+        more than 6 noise floors whatever they removed on a record whose
+        floor is confirmed (by its holds, or measured on a time axis; the
+        misfit is mostly of a kind no part describes; ``remaining`` says so
+        under ``out_of_vocabulary``).  Empty otherwise.
     ambiguous : dict
         Named effects the record does not tell apart from others: named
         effect -> the effects whose part came within 10 % of the named part's
