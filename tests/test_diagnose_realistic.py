@@ -82,8 +82,11 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: whose inner loops after a reversal start from the friction's current force and do not close
 #: (no return-point memory), which no PI model draws: 2.0-4.2 noise floors left at seeds 0-2. The
 #: honest answer is `unexplained` with nothing named; the set labels it `explained`, so the
-#: tallies count it wrong
-NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",)
+#: tallies count it wrong. HOLDOUT33's armature of Stoner-Wohlfarth grains (relays that switch at
+#: fixed fields, beside reversible rotation: its branches are not Masing's), 5.6-8.3 floors left
+#: at seeds 0-2 when fresh, likewise
+NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
+                "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz")
 
 
 def test_no_effect_named_on_clean_records(rows):
@@ -92,8 +95,8 @@ def test_no_effect_named_on_clean_records(rows):
     # whichever base fit is better
     clean = [r for r in rows if r["clean"]]
     assert len(clean) >= 5 and any(r["case"] == "holdout6_clean_triangles_offset_500hz" for r in clean)
-    # HOLDOUT32's Dahl-friction core is not a PI model: nothing may be named on it, but it is
-    # left unexplained (tests/test_diagnose_realistic_sample.py, NOT_PI_CLEAN)
+    # HOLDOUT32's Dahl-friction core and HOLDOUT33's Stoner-Wohlfarth armature are not PI models:
+    # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py, NOT_PI_CLEAN)
     named = [r for r in clean if r["effects"] or (r["verdict"] != "explained" and r["case"] not in NOT_PI_CLEAN)]
     assert not named, _table(named)
 

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-three sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-four sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (39 clean records in all, 5 CPU-seconds). 66 runs at seed 0; 62 were right in round 34
+other set (40 clean records in all, 5 CPU-seconds). 67 runs at seed 0; 62 were right in round 35
 (HOLDOUT9's unipolar generalized plays, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -14,7 +14,8 @@ HOLDOUT25's in round 27, HOLDOUT26's in round 28: a bolted joint's Iwan core, wh
 core explains with 40 plays; with 20 a drift was named on it when the set was fresh; HOLDOUT27's in round 29,
 HOLDOUT28's in round 30, HOLDOUT29's in round 31, HOLDOUT30's in round 32, HOLDOUT31's in round 33,
 HOLDOUT32's in round 34: a guide with Dahl friction, not a PI core, left unexplained with nothing named and so
-counted wrong against its label, see NOT_PI_CLEAN).
+counted wrong against its label, see NOT_PI_CLEAN; HOLDOUT33's in round 35: a Stoner-Wohlfarth armature, not a PI core
+either, likewise).
 """
 
 import os
@@ -50,8 +51,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 66
-    assert sum(r["clean"] for r in rows) == 39
+    assert len(rows) == 67
+    assert sum(r["clean"] for r in rows) == 40
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -63,8 +64,8 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 62/66 right in round 34 (round 22's 52/54, one fewer since round 32, and the clean records of
-    # HOLDOUT21-32, HOLDOUT32's not PI and counted wrong); at least 59 (89 %): three runs of margin for decisions that sit on a threshold and may fall
+    # 62/67 right in round 35 (round 22's 52/54, one fewer since round 32, and the clean records of
+    # HOLDOUT21-33, HOLDOUT32's and HOLDOUT33's not PI and counted wrong); at least 59 (89 %): three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
     assert right >= 59, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
@@ -79,9 +80,11 @@ def test_no_effect_named_on_clean_records(rows):
 def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows):
     # round 34: a saturation (a cubic output map, 22 % of the base misfit above the noise) was
     # named on it at seed 0 until naming on an unexplained record asked for 40 %
-    dahl = [r for r in rows if r["case"] in NOT_PI_CLEAN]
-    assert len(dahl) == len(NOT_PI_CLEAN)
-    assert all(not r["effects"] and r["verdict"] == "unexplained" for r in dahl), _table(dahl)
+    # (HOLDOUT32's Dahl friction); HOLDOUT33's Stoner-Wohlfarth armature leaves 5.6-8.3 floors with
+    # its parts tentative
+    not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
+    assert len(not_pi) == len(NOT_PI_CLEAN) == 2
+    assert all(not r["effects"] and r["verdict"] == "unexplained" for r in not_pi), _table(not_pi)
 
 
 def test_explained_means_within_the_noise(rows):
