@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-32 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-33 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 903/1035 (87.2 %) over the thirty-three sets in round 34
-# (the thirty-two earlier sets 886/1005 with round 34's rules and part, 877 before; HOLDOUT32 15/30
-# when fresh, 17/30 as committed), so it stays open. At seed 0, as run here, 304/345 (88.1 %), 310.5 needed, so
+# The issue's criterion is over three seeds: 910/1065 (85.4 %) over the thirty-four sets in round 35
+# (the thirty-three earlier sets 907/1035 with round 35's bound on floors left, 903 before; HOLDOUT33 3/30
+# when fresh and as committed), so it stays open. At seed 0, as run here, 305/355 (85.9 %), 319.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -61,21 +61,22 @@ def test_no_crash(rows):
 # (HOLDOUT15), 23/30 (HOLDOUT16), 24/30 (HOLDOUT17), 22/30 (HOLDOUT18), 24/30 (HOLDOUT19), 25/30
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
-# (HOLDOUT30), 21/30 (HOLDOUT31) and 15/30 (HOLDOUT32)
+# (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32) and 3/30 (HOLDOUT33)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 903/1035 right over three seeds of the thirty-three sets "
-                                         "(87.2 %); at seed 0 304/345 (88.1 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 910/1065 right over three seeds of the thirty-four sets "
+                                         "(85.4 %); at seed 0 305/355 (85.9 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 304/345 right at seed 0 in round 34 (88.1 %); at least 294 (85 %), ten
-    # runs of margin for decisions that sit on a threshold
+    # regression guard: 305/355 right at seed 0 in round 35 (85.9 %); at least 295, ten runs of
+    # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
+    # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 345
-    assert right >= 0.85 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 355
+    assert right >= 295, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -111,8 +112,8 @@ def _over(rows):
 # at seed 0 had 1.49 estimated noise floors left, its floor 1.4 % above the true noise, so
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
-# limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1035 runs of the
-# thirty-three sets (round 34) no "explained" verdict is above 1.5 true noise levels.
+# limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
+# thirty-four sets (round 35) no "explained" verdict is above 1.5 true noise levels.
 def test_explained_means_within_the_noise(rows):
     over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
@@ -123,8 +124,8 @@ def test_explained_means_within_the_noise(rows):
     assert any(r["case"] == "holdout16_oov_hunting_relay_hydraulic_follower_gray_code_staircase_370hz" for r in rows)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 90/117 runs (30/39 at seed 0) of the combined "
-                                        "cases of the thirty-three sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 90/120 runs (30/40 at seed 0) of the combined "
+                                        "cases of the thirty-four sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -139,7 +140,9 @@ def test_explained_means_within_the_noise(rows):
                                         "creep under a warming magnet's gain drift read as an asymmetry at all three "
                                         "seeds, HOLDOUT28's Pacejka tyre read as a bend of the slope beside the "
                                         "soakage's drift at seed 1, HOLDOUT32's vane drag beside a settling slab "
-                                        "missed at all three seeds)")
+                                        "missed at all three seeds, HOLDOUT33's knocked-down magnet's memory "
+                                        "and saturation named beside other effects on a core that is not PI "
+                                        "and left tentative at all three seeds)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
