@@ -44,6 +44,17 @@ def test_creep_under_a_drift_is_found_with_it(monkeypatch):
     assert len(paired) == 2, rep.report()
     # the two steps are the lead alone, then the pair: the second step ends at the pair's RMS
     assert paired[1]["rms_before"] == pytest.approx(paired[0]["rms_after"])
+    # the report and the gap figure say that the lead stands alone (its held-out RMS may rise)
+    # and that the next step is the pair
+    lead, partner = paired[0]["effect"], paired[1]["effect"]
+    assert "alone fits the training part best but does not carry" in rep.report()
+    import matplotlib.pyplot as plt
+    figs = rep.plots()
+    titles = [a.get_title() for a in figs["gap"].axes]
+    assert any(f"+ {lead} (alone; {partner} is fitted jointly with it in the next panel)" in t for t in titles), titles
+    assert any(f"+ {partner} (fitted jointly with {lead} " in t for t in titles), titles
+    for f in figs.values():
+        plt.close(f)
     # the returned model reproduces the reported held-out RMS
     held = slice(rep._rec.held_start, rep._rec.held_end)
     rms = float(np.sqrt(np.mean((y - rep.model.simulate(v))[held] ** 2)))

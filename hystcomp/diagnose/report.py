@@ -359,6 +359,9 @@ class Diagnosis:
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
             if st["evidence"].get("instead_of_one_map"):
                 lines.append("  instead of " + st["evidence"]["instead_of_one_map"])
+            if st["evidence"].get("paired"):
+                # a pair's lead can raise the held-out RMS on its own: say so where the number is read
+                lines.append("  " + st["evidence"]["paired"])
             loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
             if loss is not None:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
@@ -511,7 +514,7 @@ class Diagnosis:
         preds = list(self._step_preds)
         labels = ["base PI"]
         off = getattr(self, "_off_centre", None)
-        for st in self.steps:
+        for i, st in enumerate(self.steps):
             if st["evidence"].get("off_centre_of") and off is not None and off.get("held") is not None:
                 # the panel before it: the same model with the map's centre held at the offset
                 preds.insert(len(labels), off["held"].prediction)
@@ -529,6 +532,12 @@ class Diagnosis:
                 lab = "+ asymmetry (the saturating output map's centre fitted off the offset)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
+                paired = st["evidence"].get("paired")
+                if paired and "alone" in paired and i + 1 < len(self.steps):
+                    # the pair's lead alone may raise the held-out RMS; the next panel shows the pair
+                    lab += f" (alone; {self.steps[i + 1]['effect']} is fitted jointly with it in the next panel)"
+                elif paired:
+                    lab += " (" + paired.split(":")[0] + ")"
                 if st.get("alternatives"):
                     lab += f" (or {' or '.join(a['effect'] for a in st['alternatives'])}: near tie)"
             labels.append(lab + (" [tentative]" if st.get("tentative") else ""))
