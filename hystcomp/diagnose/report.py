@@ -142,7 +142,11 @@ class Diagnosis:
         more than 6 noise floors whatever they removed on a record whose
         floor is confirmed (by its holds, or measured on a time axis; the
         misfit is mostly of a kind no part describes; ``remaining`` says so
-        under ``out_of_vocabulary``).  Empty otherwise.
+        under ``out_of_vocabulary``).  Also, on a record left unexplained,
+        an effect added after the first step whose step lowered the held-out
+        mean square by less than 3 noise variances (its step's evidence says
+        so under ``small_later_step``; the effects before it stay named).
+        Empty otherwise.
     ambiguous : dict
         Named effects the record does not tell apart from others: named
         effect -> the effects whose part came within 10 % of the named part's
@@ -261,8 +265,14 @@ class Diagnosis:
 
     def _final_name(self):
         """The final model's parts, e.g. "PI + creep + drift" (tentative ones said so)."""
-        names = " + ".join(["PI"] + [self._with_ties(e) for e in (self.tentative or self.effects)])
-        return names + (" (tentative, not named)" if self.tentative else "")
+        if not self.effects or not self.tentative:
+            names = " + ".join(["PI"] + [self._with_ties(e) for e in (self.tentative or self.effects)])
+            return names + (" (tentative, not named)" if self.tentative else "")
+        # some named, some tentative (small later steps): in the order of the steps
+        order = [st["effect"] for st in self.steps if not st.get("dropped")]
+        parts = [e for e in dict.fromkeys(order) if e in self.effects or e in self.tentative]
+        parts += [e for e in self.effects if e not in parts]
+        return " + ".join(["PI"] + [self._with_ties(e) if e in self.effects else f"{e} (tentative)" for e in parts])
 
     def _pct(self, x):
         return 100.0 * x / self.output_span
@@ -362,6 +372,8 @@ class Diagnosis:
             if st["evidence"].get("paired"):
                 # a pair's lead can raise the held-out RMS on its own: say so where the number is read
                 lines.append("  " + st["evidence"]["paired"])
+            if st["evidence"].get("small_later_step"):
+                lines.append("  " + st["evidence"]["small_later_step"])
             loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
             if loss is not None:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "

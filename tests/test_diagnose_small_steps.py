@@ -1,0 +1,97 @@
+"""Small later steps on a record left unexplained are tentative, not named (round 36).
+
+The rule (``hystcomp.diagnose.search.LATER_GAIN``) was set on the thirty-five realistic sets:
+the 16 effects named after the first step on records left unexplained whose step gained
+0.29-2.62 noise variances held out were all wrong; the first right one gained 3.48.  The unit
+tests below check the rule's bookkeeping on hand-made search results; the last test runs it
+on a seen record (HOLDOUT9's unipolar staircase on generalized plays, seed 0), where it made
+the initial state tentative in the evaluation of round 36.
+"""
+
+import copy
+import json
+
+import numpy as np
+import pytest
+
+from hystcomp.diagnose import diagnose
+from hystcomp.diagnose.search import LATER_GAIN, _small_later_steps
+
+
+def _step(effect, gain, **kw):
+    return {"effect": effect, "evidence": {"held_out_gain_noise_variances": gain, **kw.pop("evidence", {})},
+            "alternatives": [], **kw}
+
+
+def _kw(steps, verdict="unexplained"):
+    effects = list(dict.fromkeys(s["effect"] for s in steps if not s.get("tentative") and not s.get("dropped")))
+    return {"verdict": verdict, "effects": effects, "steps": steps, "tentative": [], "stopped": "no remaining "
+            "effect pays", "ambiguous": {e: ["delay"] for e in effects}}
+
+
+def _run(steps, verdict="unexplained"):
+    kw = _kw(copy.deepcopy(steps), verdict)
+    return _small_later_steps(kw, lambda s: None)
+
+
+def test_a_later_step_under_the_bound_is_tentative_and_the_first_stays_named():
+    out = _run([_step("asymmetry", 24.8), _step("initial_state", 0.54)])
+    assert out["effects"] == ["asymmetry"]
+    assert out["tentative"] == ["initial_state"]
+    assert out["steps"][1]["tentative"] and "0.54 noise variances" in out["steps"][1]["evidence"]["small_later_step"]
+    assert "initial_state" not in out["ambiguous"] and "asymmetry" in out["ambiguous"]
+    assert "tentative: initial_state (0.54)" in out["stopped"]
+
+
+def test_the_bound_is_three_noise_variances():
+    assert LATER_GAIN == 3.0
+    below = _run([_step("creep", 100.0), _step("drift", 2.99)])
+    above = _run([_step("creep", 100.0), _step("drift", 3.01)])
+    assert below["effects"] == ["creep"] and above["effects"] == ["creep", "drift"]
+
+
+@pytest.mark.parametrize("case", ["first", "explained", "paired", "dropped", "negative", "named_twice"])
+def test_what_the_rule_leaves_alone(case):
+    steps = [_step("saturation", 40.0), _step("asymmetry", 1.0)]
+    verdict = "unexplained"
+    if case == "first":
+        steps = [_step("saturation", 1.0), _step("asymmetry", 40.0)]
+    elif case == "explained":
+        verdict = "explained"
+    elif case == "paired":
+        steps[1]["evidence"]["paired"] = "fitted jointly with drift (slow_drift)"
+    elif case == "dropped":
+        steps[1]["dropped"] = True
+    elif case == "negative":
+        # a step whose own gain is negative (the revision or a pair put it in) is judged elsewhere
+        steps[1]["evidence"]["held_out_gain_noise_variances"] = -4.3
+    elif case == "named_twice":
+        # a later small step of an effect that an earlier step names
+        steps = [_step("saturation", 40.0), _step("asymmetry", 40.0), _step("saturation", 1.0)]
+    before = _kw(copy.deepcopy(steps), verdict)
+    out = _run(steps, verdict)
+    assert out["effects"] == before["effects"] and out["tentative"] == []
+    assert not any(s.get("tentative") for s in out["steps"])
+
+
+def test_on_a_seen_record_the_part_stays_in_the_model():
+    from realistic import HOLDOUT9
+
+    r = HOLDOUT9["holdout9_asymmetry_generalized_plays_unipolar_staircase"](0)
+    rep = diagnose(r.t, r.v, r.y, progress=False)
+    # measured in round 36: asymmetry, then an initial state gaining 0.54 noise variances; 1.53 floors left
+    assert rep.verdict == "unexplained"
+    assert rep.effects == ["asymmetry"] and rep.tentative == ["initial_state"], rep.report()
+    st = rep.steps[1]
+    assert st["tentative"] and st["evidence"]["held_out_gain_noise_variances"] < LATER_GAIN
+    text = rep.report()
+    assert "(naming needs 3): tentative, not named" in text
+    assert "effects: asymmetry (tentative, not named: initial_state)" in text
+    assert rep._final_name() == "PI + asymmetry + initial_state (tentative)"
+    d = json.loads(json.dumps(rep.to_dict()))
+    assert d["effects"] == ["asymmetry"] and d["tentative_effects"] == ["initial_state"]
+    assert d["steps"][1]["tentative"] is True
+    # the model keeps the tentative part: it reproduces the reported held-out RMS
+    held = ~rep._rec.train
+    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
