@@ -95,3 +95,20 @@ def test_on_a_seen_record_the_part_stays_in_the_model():
     held = ~rep._rec.train
     rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+
+
+def test_the_split_not_taken_is_summarised_by_the_same_rule():
+    from hystcomp.diagnose.search import _choose_split
+    from test_diagnose_blocks import _split
+
+    end = _split("unexplained", ["asymmetry", "initial_state"], 1.5)
+    end["steps"] = [_step("asymmetry", 24.8), _step("initial_state", 0.54)]
+    end["ambiguous"], end["stopped"] = {}, "no remaining effect pays"
+    end = _small_later_steps(end, lambda s: None)
+    blocks = _split("unexplained", ["saturation", "delay"], 1.7, blocks=True)
+    blocks["steps"] = [_step("saturation", 30.0), _step("delay", 1.0)]
+    blocks["ambiguous"], blocks["stopped"] = {}, "no remaining effect pays"
+    chosen = _choose_split(end, blocks, lambda s: None)
+    # no drift named by the blocks: the end is taken; the blocks' summary names what the rule names
+    assert chosen["effects"] == ["asymmetry"] and chosen["tentative"] == ["initial_state"]
+    assert chosen["other_split"]["effects"] == ["saturation"] and chosen["other_split"]["tentative"] == ["delay"]
