@@ -1,6 +1,6 @@
 """Small later steps on a record left unexplained are tentative, not named (round 36).
 
-The rule (``hystcomp.diagnose.search.LATER_GAIN``) was set on the thirty-five realistic sets:
+The rule (``hystcomp.diagnose.small_steps.LATER_GAIN``) was set on the thirty-five realistic sets:
 the 16 effects named after the first step on records left unexplained whose step gained
 0.29-2.62 noise variances held out were all wrong; the first right one gained 3.48.  The unit
 tests below check the rule's bookkeeping on hand-made search results; the last test runs it
@@ -15,7 +15,7 @@ import numpy as np
 import pytest
 
 from hystcomp.diagnose import diagnose
-from hystcomp.diagnose.search import LATER_GAIN, _small_later_steps
+from hystcomp.diagnose.small_steps import LATER_GAIN, small_later_steps as _small_later_steps
 
 
 def _step(effect, gain, **kw):

@@ -16,6 +16,7 @@ from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carr
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
+from .small_steps import small_later_steps
 from .start_or_trend import start_or_trend
 
 #: the canonical effect names, in the order the candidates are tried
@@ -57,15 +58,6 @@ NIBBLE_SHARE = 0.4
 #: loop, whose high-frequency floor is far below their scatter) keep the
 #: holds' condition
 OOV_LEFT = 6.0
-#: on a record left unexplained, an effect added after the first step is
-#: named only when its step lowered the held-out mean square by at least this
-#: many noise variances (a pair's steps are judged together and exempt).  Round
-#: 36: over the thirty-five realistic sets (1,095 runs) the 16 such steps that
-#: gained 0.29-2.62 noise variances were all wrong (an initial state, a
-#: saturation, an asymmetry, a delay or a drift picking at a misfit of another
-#: kind); the first right one gained 3.48.  The part stays in the model,
-#: tentative
-LATER_GAIN = 3.0
 #: candidates refitted jointly with the earlier parts before the search stops
 JOINT_RETRY = 2
 #: lag-1 autocorrelation above which the final residual is not taken for white noise
@@ -125,7 +117,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
             other = _search(*args, "blocks", workers)
             kw = _choose_split(kw, other, say)
-        return _small_later_steps(kw, say)
+        return small_later_steps(kw, say)
     finally:
         bar.close()
 
@@ -158,48 +150,6 @@ def _pass_summary(kw):
             "noise_floors_left": kw["rms_heldout"] / kw["noise_floor"]}
 
 
-def _small_later_steps(kw, say):
-    """On a record left unexplained, make tentative (not named) every effect
-    added after the first step whose step lowered the held-out mean square by
-    less than :data:`LATER_GAIN` noise variances; a pair's steps (judged
-    together), dropped and tentative steps are left as they are.  The parts
-    stay in the model.  Applied to the reported split, after the choice
-    between splits; returns `kw` updated."""
-    if kw["verdict"] != "unexplained" or not kw["effects"] or not kw.get("steps"):
-        return kw
-    small = {}
-    for i, st in enumerate(kw["steps"]):
-        ev = st["evidence"]
-        gain = ev.get("held_out_gain_noise_variances")
-        if i == 0 or st.get("dropped") or st.get("tentative") or ev.get("paired") or gain is None:
-            continue
-        if 0.0 <= gain < LATER_GAIN:
-            small[i] = gain
-    # an effect that another step names stays named
-    named = {st["effect"] for i, st in enumerate(kw["steps"])
-             if i not in small and not st.get("dropped") and not st.get("tentative")}
-    small = {i: g for i, g in small.items() if kw["steps"][i]["effect"] in kw["effects"]
-             and kw["steps"][i]["effect"] not in named}
-    if not small:
-        return kw
-    for i, gain in small.items():
-        st = kw["steps"][i]
-        st["tentative"] = True
-        st["alternatives"] = []
-        st["evidence"]["small_later_step"] = (
-            f"added after the first step on a record left unexplained, it lowers the held-out mean square by "
-            f"only {gain:.2f} noise variances (naming needs {LATER_GAIN:g}): tentative, not named")
-    gone = {kw["steps"][i]["effect"]: g for i, g in small.items()}
-    kw["effects"] = [e for e in kw["effects"] if e not in gone]
-    kw["tentative"] = list(kw["tentative"]) + list(gone)
-    kw["ambiguous"] = {e: a for e, a in kw["ambiguous"].items() if e not in gone}
-    what = ", ".join(f"{e} ({g:.2f})" for e, g in gone.items())
-    kw["stopped"] += f"; tentative: {what}, later steps gaining under {LATER_GAIN:g} noise variances"
-    say(f"tentative, not named: {what} (noise variances gained held out at a later step of a record left "
-        "unexplained)")
-    return kw
-
-
 def _start_left_to_blocks(end, blocks):
     """Whether the end held out could not judge what it left: its held-out
     residual is within the explained limit and only the record's start keeps
@@ -229,7 +179,7 @@ def _choose_split(end, blocks, say):
     chosen, other = (blocks, end) if take else (end, blocks)
     # the summary of the split not taken says what it would name, by the same rule on small later steps
     # as the one reported (the choice above is made on the splits as searched)
-    summary = _pass_summary(_small_later_steps(other, lambda s: None))
+    summary = _pass_summary(small_later_steps(other, lambda s: None))
     if start and not (named and left_blocks < left_end):
         summary["why"] = (f"with the end held out the held-out part was at {left_end:.2f} noise floors, but a "
                           "signature stayed at the record's start, which an end held out cannot test; with blocks "
