@@ -44,6 +44,7 @@ def test_creep_under_a_drift_is_found_with_it(monkeypatch):
     assert len(paired) == 2, rep.report()
     # the two steps are the lead alone, then the pair: the second step ends at the pair's RMS
     assert paired[1]["rms_before"] == pytest.approx(paired[0]["rms_after"])
+    assert paired[0]["evidence"]["pair_lead"] is True and paired[1]["evidence"]["pair_lead"] is False
     # the report and the gap figure say that the lead stands alone (its held-out RMS may rise)
     # and that the next step is the pair
     lead, partner = paired[0]["effect"], paired[1]["effect"]
@@ -106,7 +107,7 @@ def test_flag_core_extensions_are_tentative_not_named():
     assert rep.effects == [], rep.report()
     assert "out_of_vocabulary" in rep.remaining, rep.remaining
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 18
+    assert js["schema_version"] == 19
     assert js["effects"] == [] and js["tentative_effects"] == rep.tentative
     assert 0.0 <= js["misfit_share_explained"] < 0.9
     if rep.tentative:

@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import BEYOND, HOLDS_CARRIED, caution
 
-SCHEMA_VERSION = 18
+SCHEMA_VERSION = 19
 
 
 def _jsonable(x):
@@ -278,7 +278,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 18; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 19; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -297,7 +297,8 @@ class Diagnosis:
         in a present saturation signature's evidence and in
         ``final_signatures``, and ``instead_of_one_map`` in the ``evidence``
         of an asymmetry step that replaced a saturation and an asymmetry
-        drawn by one off-centre saturating map).
+        drawn by one off-centre saturating map, 19 ``pair_lead`` beside
+        ``paired`` and ``small_later_step`` in a step's ``evidence``).
 
         Returns
         -------
@@ -544,12 +545,11 @@ class Diagnosis:
                 lab = "+ asymmetry (the saturating output map's centre fitted off the offset)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
-                paired = st["evidence"].get("paired")
-                if paired and "alone" in paired and i + 1 < len(self.steps):
+                if st["evidence"].get("paired") and st["evidence"]["pair_lead"]:
                     # the pair's lead alone may raise the held-out RMS; the next panel shows the pair
                     lab += f" (alone; {self.steps[i + 1]['effect']} is fitted jointly with it in the next panel)"
-                elif paired:
-                    lab += " (" + paired.split(":")[0] + ")"
+                elif st["evidence"].get("paired"):
+                    lab += f" ({st['evidence']['paired']})"
                 if st.get("alternatives"):
                     lab += f" (or {' or '.join(a['effect'] for a in st['alternatives'])}: near tie)"
             labels.append(lab + (" [tentative]" if st.get("tentative") else ""))

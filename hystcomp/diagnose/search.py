@@ -258,7 +258,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     # off-centre saturating map may be weighed against an asymmetry alone)
     first = {}
 
-    def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None):
+    def add_step(part, st, pt, prev, trials, step_trial, paired=None, acceptable=None, pair_lead=False):
         """Record a step: `part` added, fit `pt` of structure `st`, judged against
         the model `prev` before it; the signature is the evidence of the residual
         the step started from (`ev`, `cur`)."""
@@ -273,6 +273,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                    "bic_change": round(pt.bic - prev.bic, 1)}
         if paired is not None:
             step_ev["paired"] = paired
+            # the pair's lead (fitted alone) or its partner (the pair fitted jointly, the next step)
+            step_ev["pair_lead"] = pair_lead
         step_ev["candidates"] = {k: round(tr[3], 6) for k, tr in trials.items()}
         # the parts not fitted at this step: their signature was absent
         step_ev["signature_absent"] = list(not_fitted)
@@ -401,7 +403,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             # two steps: the lead alone, then the pair (each against the model before it)
             add_step(lead, lead_st, lead_pt, cur, trials, {ka: rms_val(lead_pt)},
                      paired=(f"fitted jointly with {partner.effect} ({kb}): {lead.effect} alone fits the "
-                             "training part best but does not carry to the held-out part"))
+                             "training part best but does not carry to the held-out part"), pair_lead=True)
             add_step(partner, st_pair, pt_pair, lead_pt, trials, {kb: rms_val(pt_pair)},
                      paired=f"fitted jointly with {lead.effect} ({ka})")
             say(f"added {lead.effect} + {partner.effect} ({ka} + {kb}) jointly: held-out RMS "
