@@ -7,9 +7,9 @@ import textwrap
 
 import numpy as np
 
-from .record import BEYOND, HOLDS_CARRIED, caution
+from .record import BEYOND, HOLDS_CARRIED, QUIET, caution, quiet_caution
 
-SCHEMA_VERSION = 19
+SCHEMA_VERSION = 20
 
 
 def _jsonable(x):
@@ -223,6 +223,11 @@ class Diagnosis:
         would have driven the input beyond the rest's range (a share of the
         span, above 0.05), which is why a block inside the record was held
         out instead (``held_out="auto"``; :attr:`validation` gives where).
+    held_out_input_share : float
+        The share of the input's span that the held-out input moves over.
+        Below 0.05 (a quiet tail: the input held, or dying away) the report
+        cautions that the held-out part tests nothing the input drives: any
+        model of the input passes it.
     held_out_moved_faster : float
         0 when the held-out part is the record's end; else how many times
         as fast the end's input moved as the rest's (the 99th percentiles of
@@ -250,6 +255,7 @@ class Diagnosis:
     explained_limit = 1.5
     held_out_moved = 0.0
     held_out_moved_faster = 0.0
+    held_out_input_share = 1.0
     other_split = None
     finer_core = None
     held_out_blocks = ()
@@ -278,7 +284,7 @@ class Diagnosis:
         return 100.0 * x / self.output_span
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 19; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 20; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -298,7 +304,8 @@ class Diagnosis:
         ``final_signatures``, and ``instead_of_one_map`` in the ``evidence``
         of an asymmetry step that replaced a saturation and an asymmetry
         drawn by one off-centre saturating map, 19 ``pair_lead`` beside
-        ``paired`` and ``small_later_step`` in a step's ``evidence``).
+        ``paired`` and ``small_later_step`` in a step's ``evidence``, 20
+        ``held_out_input_share``).
 
         Returns
         -------
@@ -323,6 +330,7 @@ class Diagnosis:
             "other_split": self.other_split, "rest": self.rest, "finer_core": self.finer_core,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
+            "held_out_input_share": self.held_out_input_share,
             "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
@@ -414,6 +422,8 @@ class Diagnosis:
                          + ("this diagnosis is taken: " + o["why"] if o["held_out"] != "blocks" else o["why"]))
         if self.held_out_beyond_fitted_range > BEYOND:
             lines.append("  caution: " + caution(self.held_out_beyond_fitted_range))
+        if self.held_out_input_share < QUIET:
+            lines.append("  caution: " + quiet_caution(self.held_out_input_share))
         tent = self.tentative
         named = [self._with_ties(e) for e in self.effects]
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"
@@ -578,6 +588,8 @@ class Diagnosis:
         title = f"verdict: {self.verdict}; stopped: {self.stopped}"
         if self.held_out_beyond_fitted_range > BEYOND:
             title += ". Caution: " + caution(self.held_out_beyond_fitted_range, short=True)
+        if self.held_out_input_share < QUIET:
+            title += ". Caution: " + quiet_caution(self.held_out_input_share, short=True)
         fig.suptitle(textwrap.fill(title, 110), fontsize=9)
         out["gap"] = fig
         return out

@@ -16,6 +16,7 @@ from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carr
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
+from .signatures import one_rate_tie
 from .small_steps import small_later_steps
 from .start_or_trend import start_or_trend
 
@@ -594,7 +595,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             f"{what} is of a kind hystcomp has no part for (e.g. a hysteresis core that is not PI); the "
             "extensions are tentative, not named")
         stopped += f"; extensions tentative: {', '.join(tentative)}"
-    ambiguous = _alternatives(steps, chosen)
+    ambiguous = one_rate_tie(rec, chosen, untested, _alternatives(steps, chosen))
     for eff, alts in ambiguous.items():
         say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
     verdict = "explained" if not remaining else "unexplained"
@@ -610,6 +611,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 validation=rec.held_interval(), held_out_blocks=rec.held_blocks(), rest=rest,
                 held_out_beyond_fitted_range=beyond,
                 held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
+                held_out_input_share=rec.held_input_share,
                 revisions=revisions, finer_core=finer, first_evidence=first_ev, final_evidence=final_ev,
                 elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _off_centre=off_centre, _rec=rec, _base_pred=base_pt.prediction,
