@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; ROUND37 in round 37, 375): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-34 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-35 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 927/1095 (84.7 %) over the thirty-five sets in round 36
-# (the thirty-four earlier sets 917/1065 with round 36's rule on small later steps, 910 before; HOLDOUT34
-# 7/30 when fresh, 10/30 as committed), so it stays open. At seed 0, as run here, 312/365 (85.5 %), 328.5 needed, so
+# The issue's criterion is over three seeds: 936/1125 (83.2 %) over the thirty-six sets in round 37
+# (the thirty-five earlier sets 927/1095 as in round 36; HOLDOUT35 9/30 when fresh and as committed: round 37's
+# change is a caution in the report), so it stays open. At seed 0, as run here, 316/375 (84.3 %), 337.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -61,22 +61,22 @@ def test_no_crash(rows):
 # (HOLDOUT15), 23/30 (HOLDOUT16), 24/30 (HOLDOUT17), 22/30 (HOLDOUT18), 24/30 (HOLDOUT19), 25/30
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
-# (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33) and 7/30 (HOLDOUT34)
+# (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34) and 9/30 (HOLDOUT35)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 927/1095 right over three seeds of the thirty-five sets "
-                                         "(84.7 %); at seed 0 312/365 (85.5 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 936/1125 right over three seeds of the thirty-six sets "
+                                         "(83.2 %); at seed 0 316/375 (84.3 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 312/365 right at seed 0 in round 36 (85.5 %; 305/355 in round 35); at least 302, ten runs of
+    # regression guard: 316/375 right at seed 0 in round 37 (84.3 %; 312/365 in round 36); at least 306, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 365
-    assert right >= 302, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 375
+    assert right >= 306, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -85,9 +85,13 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: honest answer is `unexplained` with nothing named; the set labels it `explained`, so the
 #: tallies count it wrong. HOLDOUT33's armature of Stoner-Wohlfarth grains (relays that switch at
 #: fixed fields, beside reversible rotation: its branches are not Masing's), 5.6-8.3 floors left
-#: at seeds 0-2 when fresh, likewise
+#: at seeds 0-2 when fresh, likewise. HOLDOUT35's push-pull cable whose liner's friction grows with the cable's
+#: force (a capstan law: every point of the cable a play of log(1 + |F|/c), so its branches are not Masing's),
+#: fresh in round 37: unexplained with nothing named at 1.32 and 1.86 noise floors at seeds 0 and 1; at seed 2 a
+#: saturation (gain 0.57 noise variances) was named and the record `explained` at 1.20, counted wrong
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
-                "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz")
+                "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
+                "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz")
 
 #: clean records whose core stiffens towards the ends of its stroke, which the diagnosis reads as a
 #: saturation: HOLDOUT34's voice-coil stage on Gent rubber pads that stick and slip (the pads'
@@ -112,7 +116,8 @@ def test_no_effect_named_on_clean_records(rows):
     # whichever base fit is better
     clean = [r for r in rows if r["clean"]]
     assert len(clean) >= 5 and any(r["case"] == "holdout6_clean_triangles_offset_500hz" for r in clean)
-    # HOLDOUT32's Dahl-friction core and HOLDOUT33's Stoner-Wohlfarth armature are not PI models:
+    # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature and HOLDOUT35's capstan cable are
+    # not PI models:
     # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
     # NOT_PI_CLEAN); HOLDOUT34's stiffening pads may get a saturation and nothing else (SATURATING_CLEAN)
     named = _named_on_clean(clean)
@@ -120,7 +125,8 @@ def test_no_effect_named_on_clean_records(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three)")
+                                        "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three) and "
+                                        "on HOLDOUT35's capstan cable at seed 2")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -137,7 +143,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels. HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -164,8 +170,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 90/123 runs (30/41 at seed 0) of the combined "
-                                        "cases of the thirty-five sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 91/126 runs (31/42 at seed 0) of the combined "
+                                        "cases of the thirty-six sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -184,7 +190,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "and saturation named beside other effects on a core that is not PI "
                                         "and left tentative at all three seeds, HOLDOUT34's laser whose gain "
                                         "rises and falls with its modes missed beside a diode amplifier's "
-                                        "saturation at all three seeds)")
+                                        "saturation at all three seeds, HOLDOUT35's index shifter's memory "
+                                        "beside a bouncing excitation's gain read as an asymmetry at seed 1 and "
+                                        "missed at seed 2)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-five sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-six sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (41 clean records in all, 5 CPU-seconds). 68 runs at seed 0; 63 were right in round 36
+other set (42 clean records in all, 5 CPU-seconds). 69 runs at seed 0; 63 were right in round 37
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -16,7 +16,8 @@ HOLDOUT28's in round 30, HOLDOUT29's in round 31, HOLDOUT30's in round 32, HOLDO
 HOLDOUT32's in round 34: a guide with Dahl friction, not a PI core, left unexplained with nothing named and so
 counted wrong against its label, see NOT_PI_CLEAN; HOLDOUT33's in round 35: a Stoner-Wohlfarth armature, not a PI core
 either, likewise; HOLDOUT34's in round 36: a stage on stiffening Gent rubber pads, read as a saturation, `explained`,
-counted wrong, see SATURATING_CLEAN).
+counted wrong, see SATURATING_CLEAN; HOLDOUT35's in round 37: a push-pull cable with capstan friction, not a PI
+core, left unexplained with nothing named at seed 0, see NOT_PI_CLEAN).
 """
 
 import os
@@ -52,8 +53,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 68
-    assert sum(r["clean"] for r in rows) == 41
+    assert len(rows) == 69
+    assert sum(r["clean"] for r in rows) == 42
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -65,8 +66,9 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 63/68 right in round 36 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-34, HOLDOUT32's, HOLDOUT33's and HOLDOUT34's counted wrong); at least 60 (88 %):
+    # 63/69 right in round 37 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-35, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's and HOLDOUT35's counted wrong); at least
+    # 60 (87 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
@@ -91,9 +93,9 @@ def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows
     # round 34: a saturation (a cubic output map, 22 % of the base misfit above the noise) was
     # named on it at seed 0 until naming on an unexplained record asked for 40 %
     # (HOLDOUT32's Dahl friction); HOLDOUT33's Stoner-Wohlfarth armature leaves 5.6-8.3 floors with
-    # its parts tentative
+    # its parts tentative; HOLDOUT35's capstan cable 1.32 floors at seed 0 with nothing paying
     not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
-    assert len(not_pi) == len(NOT_PI_CLEAN) == 2
+    assert len(not_pi) == len(NOT_PI_CLEAN) == 3
     assert all(not r["effects"] and r["verdict"] == "unexplained" for r in not_pi), _table(not_pi)
 
 
