@@ -163,11 +163,11 @@ ONE_RATE = 0.9
 def one_rate_tie(rec, named, untested, ambiguous):
     """`ambiguous` with a rate dependence added as a near tie of a named
     delay when the record's drive excites one rate only (:data:`ONE_RATE`)
-    and rate dependence, a candidate, was `untested` for it: no part of it was fitted to tie
-    with the delay, and the report's untested line already says that a delay
-    named here may be a lag.  Round 37: HOLDOUT35's voltage-driven coil,
+    and rate dependence, a candidate, was `untested` for it: no part of it
+    was fitted to tie with the delay, and the report's untested line already
+    says that a delay named here may be a lag.  Round 37: HOLDOUT35's voltage-driven coil,
     whose back-EMF lags the travel (4-8 ms), was named a delay at all three
-    seeds of a drive with 93-97 % of its power at one frequency.
+    seeds of a drive with 95-98 % of its power at one frequency.
 
     Examples
     --------
