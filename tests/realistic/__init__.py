@@ -101,6 +101,8 @@ the diagnosis decides, and run once for the thirty-sixth round's measurement (do
 :data:`HOLDOUT35` (``cases_holdout35.py``) was written after HOLDOUT34 was measured, by a session that did not read how
 the diagnosis decides, and run once for the thirty-seventh round's measurement (docs/diagnose.md, commit 52aa0a7, 9 of
 30 runs right); it is part of :data:`ALL` since.
+:data:`HOLDOUT36` (``cases_holdout36.py``) was written after HOLDOUT35 was measured, by a session that did not read how
+the diagnosis decides, to be run once for the next round's measurement; it is not yet part of :data:`ALL`.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -140,6 +142,7 @@ from .cases_holdout32 import HOLDOUT32  # noqa: F401
 from .cases_holdout33 import HOLDOUT33  # noqa: F401
 from .cases_holdout34 import HOLDOUT34  # noqa: F401
 from .cases_holdout35 import HOLDOUT35  # noqa: F401
+from .cases_holdout36 import HOLDOUT36  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -152,4 +155,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT12", "HOLDOUT13", "HOLDOUT14", "HOLDOUT15", "HOLDOUT16", "HOLDOUT17", "HOLDOUT18",
            "HOLDOUT19", "HOLDOUT20", "HOLDOUT21", "HOLDOUT22", "HOLDOUT23", "HOLDOUT24", "HOLDOUT25", "HOLDOUT26",
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
-           "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "ALL"]
+           "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "ALL"]
