@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-35 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-36 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 936/1125 (83.2 %) over the thirty-six sets in round 37
-# (the thirty-five earlier sets 927/1095 as in round 36; HOLDOUT35 9/30 when fresh and as committed: round 37's
-# change is a caution in the report), so it stays open. At seed 0, as run here, 316/375 (84.3 %), 337.5 needed, so
+# The issue's criterion is over three seeds: 955/1155 (82.7 %) over the thirty-seven sets in round 38
+# (the thirty-six earlier sets 936/1125 as in round 37; HOLDOUT36 19/30 when fresh and as committed), so it
+# stays open. At seed 0, as run here, 321/385 (83.4 %), 346.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -61,22 +61,22 @@ def test_no_crash(rows):
 # (HOLDOUT15), 23/30 (HOLDOUT16), 24/30 (HOLDOUT17), 22/30 (HOLDOUT18), 24/30 (HOLDOUT19), 25/30
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
-# (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34) and 9/30 (HOLDOUT35)
+# (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35) and 19/30 (HOLDOUT36)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 936/1125 right over three seeds of the thirty-six sets "
-                                         "(83.2 %); at seed 0 316/375 (84.3 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 955/1155 right over three seeds of the thirty-seven sets "
+                                         "(82.7 %); at seed 0 321/385 (83.4 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 316/375 right at seed 0 in round 37 (84.3 %; 312/365 in round 36); at least 306, ten runs of
+    # regression guard: 321/385 right at seed 0 in round 38 (83.4 %; 316/375 in round 37); at least 311, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 375
-    assert right >= 306, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 385
+    assert right >= 311, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -98,8 +98,12 @@ NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
 #: shear stiffness grows as they approach their limit stretch, so the stroke saturates; not a PI core,
 #: its branches are not Masing's). Fresh in round 36: a saturation named at seeds 0 and 2
 #: (`explained` at 1.42 true noise levels at seed 0, `unexplained` at 2.17 at seed 2), counted wrong
-#: against the label; a saturation is all that may be named on it
-SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",)
+#: against the label; a saturation is all that may be named on it. HOLDOUT36's servo valve torque motor,
+#: whose iron is a random-field Ising model (grains that flip in avalanches; the magnetisation saturates once
+#: every grain has flipped, and the motor's air gaps shear the loop): fresh in round 38 a saturation named at
+#: seed 0 (`explained` at 1.07 true noise levels), nothing at seeds 1 and 2 (`explained` at 1.29-1.30)
+SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
+                    "holdout36_clean_servo_torque_motor_sleep_spindles_1455hz")
 
 
 def _named_on_clean(rows):
@@ -119,14 +123,16 @@ def test_no_effect_named_on_clean_records(rows):
     # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature and HOLDOUT35's capstan cable are
     # not PI models:
     # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
-    # NOT_PI_CLEAN); HOLDOUT34's stiffening pads may get a saturation and nothing else (SATURATING_CLEAN)
+    # NOT_PI_CLEAN); HOLDOUT34's stiffening pads and HOLDOUT36's saturating iron may get a saturation and nothing
+    # else (SATURATING_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three) and "
-                                        "on HOLDOUT35's capstan cable at seed 2")
+                                        "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
+                                        "on HOLDOUT35's capstan cable at seed 2 and on HOLDOUT36's saturating "
+                                        "random-field Ising iron (seed 0 here)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -143,7 +149,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37) or HOLDOUT36 (round 38). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -170,8 +176,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 91/126 runs (31/42 at seed 0) of the combined "
-                                        "cases of the thirty-six sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 93/129 runs (32/43 at seed 0) of the combined "
+                                        "cases of the thirty-seven sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -192,7 +198,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "rises and falls with its modes missed beside a diode amplifier's "
                                         "saturation at all three seeds, HOLDOUT35's index shifter's memory "
                                         "beside a bouncing excitation's gain read as an asymmetry at seed 1 and "
-                                        "missed at seed 2)")
+                                        "missed at seed 2, HOLDOUT36's servo valve warming its oil beside an "
+                                        "oblique optical lever read as the drift alone at seed 1)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-six sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-seven sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (42 clean records in all, 5 CPU-seconds). 69 runs at seed 0; 63 were right in round 37
+other set (43 clean records in all, 5 CPU-seconds). 70 runs at seed 0; 63 were right in round 38
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -17,7 +17,9 @@ HOLDOUT32's in round 34: a guide with Dahl friction, not a PI core, left unexpla
 counted wrong against its label, see NOT_PI_CLEAN; HOLDOUT33's in round 35: a Stoner-Wohlfarth armature, not a PI core
 either, likewise; HOLDOUT34's in round 36: a stage on stiffening Gent rubber pads, read as a saturation, `explained`,
 counted wrong, see SATURATING_CLEAN; HOLDOUT35's in round 37: a push-pull cable with capstan friction, not a PI
-core, left unexplained with nothing named at seed 0, see NOT_PI_CLEAN).
+core, left unexplained with nothing named at seed 0, see NOT_PI_CLEAN; HOLDOUT36's in round 38: a servo valve
+whose iron is a random-field Ising model, read as a saturation at seed 0, `explained`, counted wrong, see
+SATURATING_CLEAN).
 """
 
 import os
@@ -53,8 +55,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 69
-    assert sum(r["clean"] for r in rows) == 42
+    assert len(rows) == 70
+    assert sum(r["clean"] for r in rows) == 43
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -66,9 +68,9 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 63/69 right in round 37 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-35, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's and HOLDOUT35's counted wrong); at least
-    # 60 (87 %):
+    # 63/70 right in round 38 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-36, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's and HOLDOUT36's counted
+    # wrong); at least 60 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
@@ -82,9 +84,10 @@ def test_no_effect_named_on_clean_records(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed)")
+                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed) "
+                                        "and on HOLDOUT36's random-field Ising iron at seed 0 (round 38)")
 def test_no_effect_named_on_any_clean_record(rows):
-    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 1
+    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 2
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
 
