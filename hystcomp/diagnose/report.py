@@ -283,6 +283,17 @@ class Diagnosis:
     def _pct(self, x):
         return 100.0 * x / self.output_span
 
+    def _cautions(self, short=False):
+        """The cautions on the held-out part, for the report's lines or (`short`)
+        the gap figure's title: it leaves the fitted range (:data:`BEYOND`), or
+        it barely moves the input (:data:`QUIET`)."""
+        out = []
+        if self.held_out_beyond_fitted_range > BEYOND:
+            out.append(caution(self.held_out_beyond_fitted_range, short=short))
+        if self.held_out_input_share < QUIET:
+            out.append(quiet_caution(self.held_out_input_share, short=short))
+        return out
+
     def to_dict(self):
         """The JSON object of ``hystcomp diagnose --json`` (schema version 20; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
@@ -420,10 +431,7 @@ class Diagnosis:
             lines.append(f"  other split ({o['held_out']} held out): {o['verdict']}, effects "
                          f"{', '.join(o['effects']) or 'none'}, {o['noise_floors_left']:.2f} noise floors left; "
                          + ("this diagnosis is taken: " + o["why"] if o["held_out"] != "blocks" else o["why"]))
-        if self.held_out_beyond_fitted_range > BEYOND:
-            lines.append("  caution: " + caution(self.held_out_beyond_fitted_range))
-        if self.held_out_input_share < QUIET:
-            lines.append("  caution: " + quiet_caution(self.held_out_input_share))
+        lines += ["  caution: " + c for c in self._cautions()]
         tent = self.tentative
         named = [self._with_ties(e) for e in self.effects]
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"
@@ -586,10 +594,7 @@ class Diagnosis:
             a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
         ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed, orange: held-out part)")
         title = f"verdict: {self.verdict}; stopped: {self.stopped}"
-        if self.held_out_beyond_fitted_range > BEYOND:
-            title += ". Caution: " + caution(self.held_out_beyond_fitted_range, short=True)
-        if self.held_out_input_share < QUIET:
-            title += ". Caution: " + quiet_caution(self.held_out_input_share, short=True)
+        title += "".join(". Caution: " + c for c in self._cautions(short=True))
         fig.suptitle(textwrap.fill(title, 110), fontsize=9)
         out["gap"] = fig
         return out
