@@ -1,5 +1,5 @@
 """An offset drift made of events in time: the drift may be a broken line of 24 segments
-(hystcomp.identify.parts_dynamics.EventDrift, round 32).
+(hystcomp.identify.parts_drift.EventDrift, round 32).
 
 The six-segment broken line (``slow_drift``) follows a thermal cycle or a fixture settling, but
 not an offset that moves in a few seconds at a few moments of a long record: a door opened,

@@ -10,7 +10,7 @@ import pytest
 
 from hystcomp.diagnose import diagnose
 from hystcomp.identify.parts import PARTS, Context, OutputAlgebraic, SlowDrift
-from hystcomp.identify.parts_dynamics import SLOW_DRIFT_SEGMENTS
+from hystcomp.identify.parts_drift import SLOW_DRIFT_SEGMENTS
 from realistic import excitations as ex
 from realistic import mechanisms as me
 

@@ -333,3 +333,14 @@ def test_compiled_kernel_matches_numpy(name):
 def test_custom_has_no_compiled_form():
     assert _sinh_custom(True).kernel_spec()[0] == K.CUSTOM
     assert Inverse(_sinh_custom(True)).kernel_spec()[0] == K.CUSTOM
+
+
+def test_inverse_of_an_inverse_keeps_a_closed_domain_closed():
+    # Inverse(Inverse(P)) has P's closed domain [-2, 2]; it used to be treated as open, so v = 2 (P's own end,
+    # where P(2) = 2 + 8 = 10) was refused
+    P = Polynomial([0, 1, 0, 1], interval=(-2, 2))
+    twice = Inverse(Inverse(P))
+    assert twice.domain == (-2.0, 2.0) and not twice.domain_open
+    assert float(twice(2.0)) == pytest.approx(10.0, rel=1e-12)
+    with pytest.raises(ValueError, match="outside the domain"):
+        twice(2.0 + 1e-9)

@@ -43,7 +43,8 @@ Adding an effect is one class here (or in your own module) and one call of
 
 The parts live in :mod:`~hystcomp.identify.part_base` (the base class and
 the registry), :mod:`~hystcomp.identify.parts_core`,
-:mod:`~hystcomp.identify.parts_dynamics`, :mod:`~hystcomp.identify.parts_mount`,
+:mod:`~hystcomp.identify.parts_dynamics`, :mod:`~hystcomp.identify.parts_drift`,
+:mod:`~hystcomp.identify.parts_mount`,
 :mod:`~hystcomp.identify.parts_slope` and
 :mod:`~hystcomp.identify.parts_output`;
 importing this module registers every built-in part, in one place.
@@ -52,9 +53,9 @@ importing this module registers every built-in part, in one place.
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
 from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, RingingPreload, Saturation, StaircasePreload, ViscousPlays)
-from .parts_dynamics import (Creep, Delay, DriftingDelay, Drift, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
-                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SensorDrift, EventDrift,
-                             SlewLimit, SlowDrift, SlowGainDrift)
+from .parts_dynamics import (Creep, Delay, DriftingDelay, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
+                             OutputLag, OutputQuadratic, OutputResonance, RateTerm, SlewLimit, SlowGainDrift)
+from .parts_drift import Drift, EventDrift, SensorDrift, SlowDrift  # noqa: F401 (registers right after parts_dynamics)
 from .parts_mount import MountRecoil  # noqa: F401
 from .parts_slope import OutputExponentialSlope  # noqa: F401
 from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
