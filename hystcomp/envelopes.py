@@ -29,6 +29,7 @@ import numpy as np
 from . import _kernels as _k
 from ._envelope_base import (Envelope, Inverse, _check_finite, _numeric_inverse, _same_shape,  # noqa: F401
                              _vkernel, extended_values)
+from ._doctest_home import method_examples
 from ._validation import as_float_array, as_scalar
 
 __all__ = [
@@ -488,5 +489,4 @@ for _obj in (Envelope, Inverse, extended_values):
     _obj.__module__ = __name__
 del _obj
 # the base class's methods live in _envelope_base: name their examples here so that doctest runs them
-__test__ = {f"Envelope.{_name}": _f for _name, _f in vars(Envelope).items()
-            if callable(_f) and ">>>" in (getattr(_f, "__doc__", None) or "")}
+__test__ = method_examples(Envelope, Inverse)

@@ -567,3 +567,7 @@ def simulate_loop(loop, timepts=None, inputs=None, initial_state=None, params=No
 
 # the comparison lives in its own module (imported last: it imports from this one)
 from ._comparison import Comparison, compare, loop_width, plot_comparison  # noqa: E402,F401
+from ._doctest_home import method_examples  # noqa: E402
+
+# Comparison's methods live in _comparison: name their examples here so that doctest runs them
+__test__ = method_examples(Comparison)

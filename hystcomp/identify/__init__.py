@@ -31,6 +31,7 @@ The package is split by concern:
   :func:`fit_backlash_like`, :func:`fit_duhem`, :func:`compare_models`.
 """
 
+from .._doctest_home import method_examples
 from .envelope_fit import EnvelopeFitResult, fit
 from .estimator import HysteresisRegressor
 from .other_models import (ModelComparison, ModelFit, compare_models, fit_backlash_like, fit_bouc_wen,
@@ -47,5 +48,7 @@ __all__ = ["FitResult", "EnvelopeFitResult", "HysteresisRegressor", "fit_weights
 for _name in __all__:
     globals()[_name].__module__ = __name__
 del _name
+# their methods live in the submodules: name their examples here so that doctest runs them
+__test__ = method_examples(*dict.fromkeys(globals()[_name] for _name in __all__ if isinstance(globals()[_name], type)))
 # FitResult, EnvelopeFitResult and ModelFit are one class (the names are kept)
 FitResult.__qualname__ = FitResult.__name__ = "FitResult"
