@@ -27,7 +27,7 @@ import math
 import numpy as np
 
 from . import _kernels as _k
-from ._envelope_base import (Envelope, Inverse, _check_finite, _numeric_inverse, _same_shape,  # noqa: F401
+from ._envelope_base import (Envelope, Inverse, _check_finite, _numeric_inverse, _same_shape,
                              _vkernel, extended_values)
 from ._doctest_home import method_examples
 from ._validation import as_float_array, as_scalar

@@ -49,6 +49,6 @@ for _name in __all__:
     globals()[_name].__module__ = __name__
 del _name
 # their methods live in the submodules: name their examples here so that doctest runs them
-__test__ = method_examples(*dict.fromkeys(globals()[_name] for _name in __all__ if isinstance(globals()[_name], type)))
+__test__ = method_examples(*(globals()[_name] for _name in __all__ if isinstance(globals()[_name], type)))
 # FitResult, EnvelopeFitResult and ModelFit are one class (the names are kept)
 FitResult.__qualname__ = FitResult.__name__ = "FitResult"
