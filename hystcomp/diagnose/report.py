@@ -7,9 +7,9 @@ import textwrap
 
 import numpy as np
 
-from .record import BEYOND, HOLDS_CARRIED, QUIET, caution, quiet_caution
+from .record import BEYOND, HOLDS_CARRIED, QUIET, caution, quiet_caution, start_caution
 
-SCHEMA_VERSION = 20
+SCHEMA_VERSION = 21
 
 
 def _jsonable(x):
@@ -228,6 +228,14 @@ class Diagnosis:
         Below 0.05 (a quiet tail: the input held, or dying away) the report
         cautions that the held-out part tests nothing the input drives: any
         model of the input passes it.
+    start_in_input_range : float
+        Where the record's first input sits in its input range (0: the
+        minimum, 1: the maximum).  When an ``initial_state`` is named on a
+        record that starts within 0.05 of an end (a unipolar stroke from 0 V),
+        the report cautions that it may be the memory of the actuator's use
+        before the record rather than a disturbance
+        (:func:`hystcomp.diagnose.record.start_caution`, with the figures
+        measured on the realistic test records).
     held_out_moved_faster : float
         0 when the held-out part is the record's end; else how many times
         as fast the end's input moved as the rest's (the 99th percentiles of
@@ -256,6 +264,7 @@ class Diagnosis:
     held_out_moved = 0.0
     held_out_moved_faster = 0.0
     held_out_input_share = 1.0
+    start_in_input_range = 0.5
     other_split = None
     finer_core = None
     held_out_blocks = ()
@@ -285,14 +294,18 @@ class Diagnosis:
 
     def _cautions(self, short=False):
         """The cautions on the held-out part, for the report's lines or (`short`)
-        the gap figure's title: it leaves the fitted range (:data:`BEYOND`), or
-        it barely moves the input (:data:`QUIET`)."""
+        the gap figure's title: it leaves the fitted range (:data:`BEYOND`),
+        it barely moves the input (:data:`QUIET`), or an initial state is named
+        on a record that starts at an end of its input range
+        (:data:`~hystcomp.diagnose.record.START_END`)."""
         out = []
         if self.held_out_beyond_fitted_range > BEYOND:
             out.append(caution(self.held_out_beyond_fitted_range, short=short))
         if self.held_out_input_share < QUIET:
             out.append(quiet_caution(self.held_out_input_share, short=short))
-        return out
+        if "initial_state" in self.effects:
+            out.append(start_caution(self.start_in_input_range, short=short))
+        return [c for c in out if c]
 
     def to_dict(self):
         """The JSON object of ``hystcomp diagnose --json`` (schema version 20; 5
@@ -316,7 +329,7 @@ class Diagnosis:
         of an asymmetry step that replaced a saturation and an asymmetry
         drawn by one off-centre saturating map, 19 ``pair_lead`` beside
         ``paired`` and ``small_later_step`` in a step's ``evidence``, 20
-        ``held_out_input_share``).
+        ``held_out_input_share``, 21 ``start_in_input_range``).
 
         Returns
         -------
@@ -342,6 +355,7 @@ class Diagnosis:
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
             "held_out_input_share": self.held_out_input_share,
+            "start_in_input_range": self.start_in_input_range,
             "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
