@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-eight sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the thirty-nine sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (44 clean records in all, 5 CPU-seconds). 71 runs at seed 0; 64 were right in round 39
+other set (45 clean records in all, 5 CPU-seconds). 72 runs at seed 0; 65 were right in round 40
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -20,6 +20,7 @@ counted wrong, see SATURATING_CLEAN; HOLDOUT35's in round 37: a push-pull cable 
 core, left unexplained with nothing named at seed 0, see NOT_PI_CLEAN; HOLDOUT36's in round 38: a servo valve
 whose iron is a random-field Ising model, read as a saturation at seed 0, `explained`, counted wrong, see
 SATURATING_CLEAN; HOLDOUT37's in round 39: a push-pull pair of liquid-nanofoam cells, `explained` with nothing named at
+seed 0; HOLDOUT38's in round 40: a rod pushed through friction bushes with free play, `explained` with nothing named at
 seed 0).
 """
 
@@ -56,8 +57,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 71
-    assert sum(r["clean"] for r in rows) == 44
+    assert len(rows) == 72
+    assert sum(r["clean"] for r in rows) == 45
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -69,13 +70,13 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 64/71 right in round 39 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-37, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's and HOLDOUT36's counted
-    # wrong); at least 61 (86 %):
+    # 65/72 right in round 40 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-38, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's and HOLDOUT36's counted
+    # wrong); at least 62 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 61, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 62, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
