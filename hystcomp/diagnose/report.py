@@ -308,7 +308,7 @@ class Diagnosis:
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 20; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 21; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
