@@ -7,7 +7,7 @@ import textwrap
 
 import numpy as np
 
-from .record import BEYOND, HOLDS_CARRIED, QUIET, caution, quiet_caution, start_caution
+from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
 
 SCHEMA_VERSION = 21
 
@@ -294,15 +294,14 @@ class Diagnosis:
 
     def _cautions(self, short=False):
         """The cautions on the held-out part, for the report's lines or (`short`)
-        the gap figure's title: it leaves the fitted range (:data:`BEYOND`),
-        it barely moves the input (:data:`QUIET`), or an initial state is named
+        the gap figure's title: it leaves the fitted range
+        (:data:`~hystcomp.diagnose.record.BEYOND`), it barely moves the input
+        (:data:`~hystcomp.diagnose.record.QUIET`), or an initial state is named
         on a record that starts at an end of its input range
-        (:data:`~hystcomp.diagnose.record.START_END`)."""
-        out = []
-        if self.held_out_beyond_fitted_range > BEYOND:
-            out.append(caution(self.held_out_beyond_fitted_range, short=short))
-        if self.held_out_input_share < QUIET:
-            out.append(quiet_caution(self.held_out_input_share, short=short))
+        (:data:`~hystcomp.diagnose.record.START_END`).  Each caution function
+        holds its own bound and says "" within it."""
+        out = [caution(self.held_out_beyond_fitted_range, short=short),
+               quiet_caution(self.held_out_input_share, short=short)]
         if "initial_state" in self.effects:
             out.append(start_caution(self.start_in_input_range, short=short))
         return [c for c in out if c]
