@@ -41,8 +41,9 @@ HOLDOUT35 was run once for the thirty-seventh round's measurement (9 of 30 right
 HOLDOUT36 was run once for the thirty-eighth round's measurement (19 of 30 right) and is part of ALL since.
 HOLDOUT37 was run once for the thirty-ninth round's measurement (12 of 30 right) and is part of ALL since.
 HOLDOUT38 was run once for the fortieth round's measurement (20 of 30 right) and is part of ALL since.
+HOLDOUT39 was run once for the forty-first round's measurement (13 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout38|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout39|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 

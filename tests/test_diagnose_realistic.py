@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; ROUND41_SLOW in round 41, 415, with HOLDOUT39's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-38 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-39 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 988/1215 (81.3 %) over the thirty-nine sets in round 40
-# (the thirty-eight earlier sets 968/1185 as in round 39; HOLDOUT38 20/30 when fresh and as committed: round 40
-# changed no decision), so it stays open. At seed 0, as run here, 334/405 (82.5 %), 364.5 needed, so
+# The issue's criterion is over three seeds: 1001/1245 (80.4 %) over the forty sets in round 41
+# (the thirty-nine earlier sets 988/1215 as in round 40; HOLDOUT39 13/30 when fresh and as committed: round 41
+# changed no decision), so it stays open. At seed 0, as run here, 339/415 (81.7 %), 373.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -62,22 +62,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37) and 20/30 (HOLDOUT38)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38) and 13/30 (HOLDOUT39)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 988/1215 right over three seeds of the thirty-nine sets "
-                                         "(81.3 %); at seed 0 334/405 (82.5 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1001/1245 right over three seeds of the forty sets "
+                                         "(80.4 %); at seed 0 339/415 (81.7 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 334/405 right at seed 0 in round 40 (82.5 %; 325/395 in round 39); at least 324, ten runs of
+    # regression guard: 339/415 right at seed 0 in round 41 (81.7 %; 334/405 in round 40); at least 329, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 405
-    assert right >= 324, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 415
+    assert right >= 329, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -89,10 +89,16 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: at seeds 0-2 when fresh, likewise. HOLDOUT35's push-pull cable whose liner's friction grows with the cable's
 #: force (a capstan law: every point of the cable a play of log(1 + |F|/c), so its branches are not Masing's),
 #: fresh in round 37: unexplained with nothing named at 1.32 and 1.86 noise floors at seeds 0 and 1; at seed 2 a
-#: saturation (gain 0.57 noise variances) was named and the record `explained` at 1.20, counted wrong
+#: saturation (gain 0.57 noise variances) was named and the record `explained` at 1.20, counted wrong.
+#: HOLDOUT39's superconducting rod in Bean's critical state with Kim's field-dependent critical current (every
+#: ring's flux a nonlinear function of its play, the loops narrowing as the field grows: not a PI core), fresh
+#: in round 41: unexplained with nothing named at 1.33 noise floors at seed 0; at seeds 1 and 2 an asymmetry
+#: (asymmetric envelopes, whose curvatures of nearly opposite sign draw loops that narrow towards both ends) was
+#: named and the record `explained` at 1.13 and 1.37, counted wrong
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
-                "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz")
+                "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
+                "holdout39_clean_kim_critical_state_rod_inkjet_carriage_1445hz")
 
 #: clean records whose core stiffens towards the ends of its stroke, which the diagnosis reads as a
 #: saturation: HOLDOUT34's voice-coil stage on Gent rubber pads that stick and slip (the pads'
@@ -121,8 +127,8 @@ def test_no_effect_named_on_clean_records(rows):
     # whichever base fit is better
     clean = [r for r in rows if r["clean"]]
     assert len(clean) >= 5 and any(r["case"] == "holdout6_clean_triangles_offset_500hz" for r in clean)
-    # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature and HOLDOUT35's capstan cable are
-    # not PI models:
+    # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature, HOLDOUT35's capstan cable and
+    # HOLDOUT39's critical-state rod are not PI models:
     # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
     # NOT_PI_CLEAN); HOLDOUT34's stiffening pads and HOLDOUT36's saturating iron may get a saturation and nothing
     # else (SATURATING_CLEAN)
@@ -133,7 +139,8 @@ def test_no_effect_named_on_clean_records(rows):
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
                                         "on HOLDOUT35's capstan cable at seed 2 and on HOLDOUT36's saturating "
-                                        "random-field Ising iron (seed 0 here)")
+                                        "random-field Ising iron (seed 0 here); an asymmetry on HOLDOUT39's "
+                                        "critical-state rod at seeds 1 and 2")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -150,7 +157,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39) or HOLDOUT38 (round 40). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40) or HOLDOUT39 (round 41). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -177,8 +184,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 95/135 runs (32/45 at seed 0) of the combined "
-                                        "cases of the thirty-nine sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 95/138 runs (32/46 at seed 0) of the combined "
+                                        "cases of the forty sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -201,7 +208,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "beside a bouncing excitation's gain read as an asymmetry at seed 1 and "
                                         "missed at seed 2, HOLDOUT37's DAC FIFO's dead time missed beside the "
                                         "cells' bleeding routine's memory at seed 0 and both missed at seed 1, HOLDOUT38's "
-                                        "coil's moving mass and swing-arm asymmetry missed at all three seeds)")
+                                        "coil's moving mass and swing-arm asymmetry missed at all three seeds, "
+                                        "HOLDOUT39's flux creep and flux flow in one superconducting rod missed "
+                                        "at all three seeds)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
