@@ -8,8 +8,9 @@ import textwrap
 import numpy as np
 
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
+from .symmetry import symmetry_caution
 
-SCHEMA_VERSION = 21
+SCHEMA_VERSION = 22
 
 
 def _jsonable(x):
@@ -236,6 +237,19 @@ class Diagnosis:
         before the record rather than a disturbance
         (:func:`hystcomp.diagnose.record.start_caution`, with the figures
         measured on the realistic test records).
+    asymmetry_antisymmetric_share : float or None
+        When the final model holds asymmetric envelopes: the share of their
+        departure from a PI core that reflection through the rest point
+        (``v -> -v``) reverses (:func:`hystcomp.diagnose.symmetry.antisymmetric_share`);
+        None otherwise.  When an asymmetry is named with a share below 0.35
+        on a record driven to both sides (:attr:`input_balance` at least
+        0.5), the report cautions that the envelopes draw loops that change
+        their width with the level alike on both sides: the core's shape,
+        not an asymmetry (:func:`hystcomp.diagnose.symmetry.symmetry_caution`).
+    input_balance : float
+        How evenly the input is driven to both sides of the core's rest
+        point: the weaker side's reach over the stronger's (0 for a record
+        on one side, such as a unipolar stroke from 0 V).
     held_out_moved_faster : float
         0 when the held-out part is the record's end; else how many times
         as fast the end's input moved as the rest's (the 99th percentiles of
@@ -265,6 +279,8 @@ class Diagnosis:
     held_out_moved_faster = 0.0
     held_out_input_share = 1.0
     start_in_input_range = 0.5
+    asymmetry_antisymmetric_share = None
+    input_balance = 1.0
     other_split = None
     finer_core = None
     held_out_blocks = ()
@@ -298,16 +314,20 @@ class Diagnosis:
         (:data:`~hystcomp.diagnose.record.BEYOND`), it barely moves the input
         (:data:`~hystcomp.diagnose.record.QUIET`), or an initial state is named
         on a record that starts at an end of its input range
-        (:data:`~hystcomp.diagnose.record.START_END`).  Each caution function
+        (:data:`~hystcomp.diagnose.record.START_END`), or an asymmetry named as
+        asymmetric envelopes that are mostly point symmetric
+        (:data:`~hystcomp.diagnose.symmetry.POINT_SYMMETRIC`).  Each caution function
         holds its own bound and says "" within it."""
         out = [caution(self.held_out_beyond_fitted_range, short=short),
                quiet_caution(self.held_out_input_share, short=short)]
         if "initial_state" in self.effects:
             out.append(start_caution(self.start_in_input_range, short=short))
+        if "asymmetry" in self.effects:
+            out.append(symmetry_caution(self.asymmetry_antisymmetric_share, self.input_balance, short=short))
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 21; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 22; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -328,7 +348,8 @@ class Diagnosis:
         of an asymmetry step that replaced a saturation and an asymmetry
         drawn by one off-centre saturating map, 19 ``pair_lead`` beside
         ``paired`` and ``small_later_step`` in a step's ``evidence``, 20
-        ``held_out_input_share``, 21 ``start_in_input_range``).
+        ``held_out_input_share``, 21 ``start_in_input_range``, 22
+        ``asymmetry_antisymmetric_share`` and ``input_balance``).
 
         Returns
         -------
@@ -355,6 +376,8 @@ class Diagnosis:
             "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
             "held_out_input_share": self.held_out_input_share,
             "start_in_input_range": self.start_in_input_range,
+            "asymmetry_antisymmetric_share": self.asymmetry_antisymmetric_share,
+            "input_balance": self.input_balance,
             "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),

@@ -19,6 +19,7 @@ from .signatures import evidence as _evidence
 from .signatures import one_rate_tie
 from .small_steps import small_later_steps
 from .start_or_trend import start_or_trend
+from .symmetry import antisymmetric_share, input_balance
 
 #: the canonical effect names, in the order the candidates are tried
 EFFECTS = ("rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "saturation", "output_saturation",
@@ -613,6 +614,8 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 held_out_moved=rec.held_moved_from_end, held_out_moved_faster=rec.held_moved_faster,
                 held_out_input_share=rec.held_input_share,
                 start_in_input_range=rec.start_in_input_range,
+                asymmetry_antisymmetric_share=antisymmetric_share(model.values.get("asymmetric_envelopes")),
+                input_balance=input_balance(rec.vmin, rec.vmax, rec.origin),
                 revisions=revisions, finer_core=finer, first_evidence=first_ev, final_evidence=final_ev,
                 elapsed=time.perf_counter() - t0,
                 n_evaluations=vp.n_evaluations, _off_centre=off_centre, _rec=rec, _base_pred=base_pt.prediction,
