@@ -123,6 +123,6 @@ def symmetry_caution(share, balance, short=False):
             "(v -> -v) they stay as they are, drawing loops that widen or narrow towards both ends of the "
             "input alike, a core whose loop width changes with the level's magnitude (not a PI core), "
             "rather than a difference between the two sides; on the realistic test records driven to both "
-            "sides a share below 35 % came on 4 of the 7 runs without a labelled asymmetry and on none of "
-            "the 11 with one; compare the loops at equal positive and negative drive before reading it as "
-            "an asymmetry")
+            f"sides a share below {100 * POINT_SYMMETRIC:.0f} % came on 4 of the 7 runs without a labelled "
+            "asymmetry and on none of the 11 with one; compare the loops at equal positive and negative drive "
+            "before reading it as an asymmetry")
