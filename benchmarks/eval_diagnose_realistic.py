@@ -131,6 +131,7 @@ def run_one(name, seed):
         "steps": [] if res is None else [
             {"effect": st["effect"], "kind": st["evidence"]["extension"].get("kind"),
              "dropped": bool(st.get("dropped", False)), "tentative": bool(st.get("tentative", False)),
+             "core_shape": bool(st.get("core_shape", False)),
              "acceptable": st["evidence"].get("acceptable", {}),
              "revised_by": (st["evidence"].get("revised") or {}).get("by"),
              "loss_without": st["evidence"].get("held_out_loss_without_it_noise_variances"),

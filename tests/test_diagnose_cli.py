@@ -41,7 +41,7 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert js["schema_version"] == 22
+    assert js["schema_version"] == 23
     assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
     assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]
@@ -49,7 +49,7 @@ def test_json_schema(drift_csv, capsys, tmp_path):
     assert isinstance(js["untested"], dict) and js["stopped"]
     s = js["steps"][0]
     assert list(s) == ["effect", "rms_before", "rms_after", "rms_before_pct", "rms_after_pct", "evidence", "dropped",
-                       "tentative", "alternatives"]
+                       "tentative", "core_shape", "alternatives"]
     assert s["dropped"] is False and s["tentative"] is False and js["tentative_effects"] == []
     assert isinstance(js["ambiguous"], dict) and isinstance(s["alternatives"], list)
     assert isinstance(s["evidence"]["acceptable"], dict) and "offset_drift" in s["evidence"]["acceptable"]

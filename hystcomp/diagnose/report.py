@@ -8,9 +8,8 @@ import textwrap
 import numpy as np
 
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
-from .symmetry import symmetry_caution
 
-SCHEMA_VERSION = 22
+SCHEMA_VERSION = 23
 
 
 def _jsonable(x):
@@ -241,15 +240,23 @@ class Diagnosis:
         When the final model holds asymmetric envelopes: the share of their
         departure from a PI core that reflection through the rest point
         (``v -> -v``) reverses (:func:`hystcomp.diagnose.symmetry.antisymmetric_share`);
-        None otherwise.  When an asymmetry is named with a share below 0.35
-        on a record driven to both sides (:attr:`input_balance` at least
-        0.5), the report cautions that the envelopes draw loops that change
-        their width with the level alike on both sides: the core's shape,
-        not an asymmetry (:func:`hystcomp.diagnose.symmetry.symmetry_caution`).
+        None otherwise.  Below 0.35 on a record driven to both sides
+        (:attr:`input_balance` at least 0.5) the envelopes draw loops that
+        change their width with the level alike on both sides: the core's
+        shape, not named an asymmetry (:attr:`core_shape`).
     input_balance : float
         How evenly the input is driven to both sides of the core's rest
         point: the weaker side's reach over the stronger's (0 for a record
         on one side, such as a unipolar stroke from 0 V).
+    core_shape : dict or None
+        When an asymmetry was named only by asymmetric envelopes that are
+        mostly point symmetric (:attr:`asymmetry_antisymmetric_share` below
+        0.35) on a record driven to both sides: the envelopes are read as
+        the core's shape (a generalized PI core whose loops widen or narrow
+        towards both ends alike), kept in the model and not named
+        (:func:`hystcomp.diagnose.symmetry.core_shape`): ``part``,
+        ``antisymmetric_share``, ``input_balance``, ``step`` (1-based, the
+        step marked ``core_shape``) and ``why``.  None otherwise.
     held_out_moved_faster : float
         0 when the held-out part is the record's end; else how many times
         as fast the end's input moved as the rest's (the 99th percentiles of
@@ -281,6 +288,7 @@ class Diagnosis:
     start_in_input_range = 0.5
     asymmetry_antisymmetric_share = None
     input_balance = 1.0
+    core_shape = None
     other_split = None
     finer_core = None
     held_out_blocks = ()
@@ -294,16 +302,22 @@ class Diagnosis:
         alts = self.ambiguous.get(effect)
         return effect + (f" (or {' or '.join(alts)})" if alts else "")
 
+    def _core_name(self):
+        """The core's name: "PI", or "PI (point-symmetric envelopes)" when
+        asymmetric envelopes were read as its shape (:attr:`core_shape`)."""
+        return "PI" + (" (point-symmetric envelopes)" if self.core_shape else "")
+
     def _final_name(self):
         """The final model's parts, e.g. "PI + creep + drift" (tentative ones said so)."""
         if not self.effects or not self.tentative:
-            names = " + ".join(["PI"] + [self._with_ties(e) for e in (self.tentative or self.effects)])
+            names = " + ".join([self._core_name()] + [self._with_ties(e) for e in (self.tentative or self.effects)])
             return names + (" (tentative, not named)" if self.tentative else "")
         # some named, some tentative (small later steps): in the order of the steps
         order = [st["effect"] for st in self.steps if not st.get("dropped")]
         parts = [e for e in dict.fromkeys(order) if e in self.effects or e in self.tentative]
         parts += [e for e in self.effects if e not in parts]
-        return " + ".join(["PI"] + [self._with_ties(e) if e in self.effects else f"{e} (tentative)" for e in parts])
+        return " + ".join([self._core_name()]
+                          + [self._with_ties(e) if e in self.effects else f"{e} (tentative)" for e in parts])
 
     def _pct(self, x):
         return 100.0 * x / self.output_span
@@ -314,20 +328,16 @@ class Diagnosis:
         (:data:`~hystcomp.diagnose.record.BEYOND`), it barely moves the input
         (:data:`~hystcomp.diagnose.record.QUIET`), or an initial state is named
         on a record that starts at an end of its input range
-        (:data:`~hystcomp.diagnose.record.START_END`), or an asymmetry named as
-        asymmetric envelopes that are mostly point symmetric
-        (:data:`~hystcomp.diagnose.symmetry.POINT_SYMMETRIC`).  Each caution function
+        (:data:`~hystcomp.diagnose.record.START_END`).  Each caution function
         holds its own bound and says "" within it."""
         out = [caution(self.held_out_beyond_fitted_range, short=short),
                quiet_caution(self.held_out_input_share, short=short)]
         if "initial_state" in self.effects:
             out.append(start_caution(self.start_in_input_range, short=short))
-        if "asymmetry" in self.effects:
-            out.append(symmetry_caution(self.asymmetry_antisymmetric_share, self.input_balance, short=short))
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 22; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 23; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -349,7 +359,8 @@ class Diagnosis:
         drawn by one off-centre saturating map, 19 ``pair_lead`` beside
         ``paired`` and ``small_later_step`` in a step's ``evidence``, 20
         ``held_out_input_share``, 21 ``start_in_input_range``, 22
-        ``asymmetry_antisymmetric_share`` and ``input_balance``).
+        ``asymmetry_antisymmetric_share`` and ``input_balance``, 23
+        ``core_shape`` and the steps' ``core_shape``).
 
         Returns
         -------
@@ -358,7 +369,7 @@ class Diagnosis:
         steps = [{"effect": s["effect"], "rms_before": s["rms_before"], "rms_after": s["rms_after"],
                   "rms_before_pct": self._pct(s["rms_before"]), "rms_after_pct": self._pct(s["rms_after"]),
                   "evidence": s["evidence"], "dropped": bool(s.get("dropped", False)),
-                  "tentative": bool(s.get("tentative", False)),
+                  "tentative": bool(s.get("tentative", False)), "core_shape": bool(s.get("core_shape", False)),
                   "alternatives": list(s.get("alternatives", []))} for s in self.steps]
         return _jsonable({
             "schema_version": SCHEMA_VERSION, "verdict": self.verdict, "noise_floor": self.noise_floor,
@@ -377,7 +388,7 @@ class Diagnosis:
             "held_out_input_share": self.held_out_input_share,
             "start_in_input_range": self.start_in_input_range,
             "asymmetry_antisymmetric_share": self.asymmetry_antisymmetric_share,
-            "input_balance": self.input_balance,
+            "input_balance": self.input_balance, "core_shape": self.core_shape,
             "steps": steps, "untested": dict(self.untested),
             "stopped": self.stopped, "remaining": dict(self.remaining),
             "revisions": list(getattr(self, "revisions", [])),
@@ -420,7 +431,8 @@ class Diagnosis:
         for i, st in enumerate(self.steps, 1):
             ext = st["evidence"]["extension"]
             sig = st["evidence"]["signature"]
-            lines.append(f"step {i}: {st['effect']} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
+            shape = ", read as the core's shape" if st.get("core_shape") else ""
+            lines.append(f"step {i}: {st['effect']}{shape} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
             if st["evidence"].get("instead_of_one_map"):
@@ -430,6 +442,8 @@ class Diagnosis:
                 lines.append("  " + st["evidence"]["paired"])
             if st["evidence"].get("small_later_step"):
                 lines.append("  " + st["evidence"]["small_later_step"])
+            if st.get("core_shape") and self.core_shape:
+                lines.append("  the core's shape, not named: " + self.core_shape["why"])
             loss = st["evidence"].get("held_out_loss_without_it_noise_variances")
             if loss is not None:
                 lines.append(f"  without it (the other effects refitted): the held-out mean square rises by "
@@ -471,7 +485,8 @@ class Diagnosis:
         tent = self.tentative
         named = [self._with_ties(e) for e in self.effects]
         lines.append(f"verdict: {self.verdict}; effects: {', '.join(named) or 'none'}"
-                     + (f" (tentative, not named: {', '.join(tent)})" if tent else "") + "; held-out RMS "
+                     + (f" (tentative, not named: {', '.join(tent)})" if tent else "")
+                     + ("; core: PI with point-symmetric envelopes" if self.core_shape else "") + "; held-out RMS "
                      f"{self.rms_before:.4g} -> {self.rms_after:.4g}; stopped: {self.stopped}")
         return "\n".join(lines)
 
@@ -599,6 +614,8 @@ class Diagnosis:
                 lab = "+ asymmetry (the saturating output map's centre fitted off the offset)"
             else:
                 lab = f"+ {st['effect']}" + (" (dropped in the revision)" if st.get("dropped") else "")
+                if st.get("core_shape"):
+                    lab = "+ point-symmetric envelopes (asymmetry fitted, read as the core's shape: not named)"
                 if st["evidence"].get("paired") and st["evidence"]["pair_lead"]:
                     # the pair's lead alone may raise the held-out RMS; the next panel shows the pair
                     lab += f" (alone; {self.steps[i + 1]['effect']} is fitted jointly with it in the next panel)"

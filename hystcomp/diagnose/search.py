@@ -19,7 +19,7 @@ from .signatures import evidence as _evidence
 from .signatures import one_rate_tie
 from .small_steps import small_later_steps
 from .start_or_trend import start_or_trend
-from .symmetry import antisymmetric_share, input_balance
+from .symmetry import antisymmetric_share, core_shape, input_balance
 
 #: the canonical effect names, in the order the candidates are tried
 EFFECTS = ("rate_dependence", "creep", "drift", "gain_drift", "asymmetry", "saturation", "output_saturation",
@@ -119,7 +119,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
             other = _search(*args, "blocks", workers)
             kw = _choose_split(kw, other, say)
-        return small_later_steps(kw, say)
+        return core_shape(small_later_steps(kw, say), say)
     finally:
         bar.close()
 
@@ -179,9 +179,10 @@ def _choose_split(end, blocks, say):
     start = _start_left_to_blocks(end, blocks)
     take = (bool(named) and left_blocks < left_end) or start
     chosen, other = (blocks, end) if take else (end, blocks)
-    # the summary of the split not taken says what it would name, by the same rule on small later steps
-    # as the one reported (the choice above is made on the splits as searched)
-    summary = _pass_summary(small_later_steps(other, lambda s: None))
+    # the summary of the split not taken says what it would name, by the same rules on small later steps
+    # and the core's shape as the one reported (the choice above is made on the splits as searched)
+    quiet = lambda s: None  # noqa: E731
+    summary = _pass_summary(core_shape(small_later_steps(other, quiet), quiet))
     if start and not (named and left_blocks < left_end):
         summary["why"] = (f"with the end held out the held-out part was at {left_end:.2f} noise floors, but a "
                           "signature stayed at the record's start, which an end held out cannot test; with blocks "
