@@ -27,8 +27,8 @@ drift            ``ramp``: linear in time; ``thermal``: 1 - exp(-t/tau), tau
                  2-6 % of the output span
 asymmetry        ``branch_gain``: asymmetric mGPI with linear envelopes of
                  slopes 1 and 1.25-1.6 (or the inverse); ``envelopes``:
-                 quadratic envelopes v + c v^2/A with ``|c_left - c_right|``
-                 0.14-0.22; ``output_quadratic``: y = H + a H^2 / max|H|,
+                 one quadratic envelope v + c v^2/A, ``|c|`` 0.14-0.22,
+                 the other v (since round 42); ``output_quadratic``: y = H + a H^2 / max|H|,
                  ``|a|`` 0.06-0.15
 saturation       ``tanh_envelope``: mGPI with gamma = tanh(b v)/b, b A
                  0.8-1.4; ``output_tanh``: y = S tanh(H/S), S 0.7-1.2 of
@@ -201,9 +201,15 @@ def hidden_effect_data(effect=None, seed=0, dt=4e-3, duration=40.0, noise=0.002,
             prm["slope_ratio"] = k
             y = MGPI(r, p, p0, envelope_left=Linear(k), envelope_right=Identity()).simulate(v)
         elif mech == "envelopes":
-            mid, half = float(rng.uniform(-0.05, 0.05)), float(rng.uniform(0.07, 0.11))
+            # one envelope bent, the other straight: a difference between the
+            # input's two sides (until round 42 the two were bent by nearly
+            # opposite curvatures, mid +- half: gl(v) = -gr(-v) within |mid|,
+            # a point-symmetric core whose loops narrow or widen towards both
+            # ends alike, not an asymmetry; the same draws, so the other
+            # mechanisms' records stay as they were)
+            side, half = float(rng.uniform(-0.05, 0.05)), float(rng.uniform(0.07, 0.11))
             sgn = float(rng.choice([-1.0, 1.0]))
-            cl, cr = mid + sgn * half, mid - sgn * half
+            cl, cr = (2.0 * sgn * half, 0.0) if side >= 0.0 else (0.0, 2.0 * sgn * half)
             prm.update(c_left=cl, c_right=cr)
             gl = Polynomial([0.0, 1.0, cl / A], interval=(lo, hi))
             gr = Polynomial([0.0, 1.0, cr / A], interval=(lo, hi))
