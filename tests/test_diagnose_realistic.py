@@ -4,7 +4,7 @@ Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in
 in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-39 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-40 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,9 +49,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1001/1245 (80.4 %) over the forty sets in round 41
-# (the thirty-nine earlier sets 988/1215 as in round 40; HOLDOUT39 13/30 when fresh and as committed: round 41
-# changed no decision), so it stays open. At seed 0, as run here, 339/415 (81.7 %), 373.5 needed, so
+# The issue's criterion is over three seeds: 1020/1275 (80.0 %) over the forty-one sets in round 42
+# (the forty earlier sets 1004/1245: round 42 read point-symmetric asymmetric envelopes as the core's shape,
+# which mended three runs of HOLDOUT39; HOLDOUT40 16/30 when fresh and as committed), so it stays open.
+# At seed 0, as run here, 345/425 (81.2 %), 382.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -62,22 +63,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38) and 13/30 (HOLDOUT39)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39) and 16/30 (HOLDOUT40)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1001/1245 right over three seeds of the forty sets "
-                                         "(80.4 %); at seed 0 339/415 (81.7 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1020/1275 right over three seeds of the forty-one sets "
+                                         "(80.0 %); at seed 0 345/425 (81.2 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 339/415 right at seed 0 in round 41 (81.7 %; 334/405 in round 40); at least 329, ten runs of
+    # regression guard: 345/425 right at seed 0 in round 42 (81.2 %; 339/415 in round 41); at least 335, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 415
-    assert right >= 329, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 425
+    assert right >= 335, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -94,7 +95,8 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: ring's flux a nonlinear function of its play, the loops narrowing as the field grows: not a PI core), fresh
 #: in round 41: unexplained with nothing named at 1.33 noise floors at seed 0; at seeds 1 and 2 an asymmetry
 #: (asymmetric envelopes, whose curvatures of nearly opposite sign draw loops that narrow towards both ends) was
-#: named and the record `explained` at 1.13 and 1.37, counted wrong
+#: named and the record `explained` at 1.13 and 1.37, counted wrong; since round 42 those envelopes are read as
+#: the core's shape, not named, and seeds 1 and 2 are right
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
@@ -108,9 +110,13 @@ NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
 #: against the label; a saturation is all that may be named on it. HOLDOUT36's servo valve torque motor,
 #: whose iron is a random-field Ising model (grains that flip in avalanches; the magnetisation saturates once
 #: every grain has flipped, and the motor's air gaps shear the loop): fresh in round 38 a saturation named at
-#: seed 0 (`explained` at 1.07 true noise levels), nothing at seeds 1 and 2 (`explained` at 1.29-1.30)
+#: seed 0 (`explained` at 1.07 true noise levels), nothing at seeds 1 and 2 (`explained` at 1.29-1.30).
+#: HOLDOUT40's soft PZT disc whose grains switch by 180 deg (its polarisation saturates once the grains have
+#: switched; the depolarising field shears the loop): fresh in round 42 a saturation (a cubic output map) named
+#: at every seed, `explained` at 1.06-1.20 true noise levels
 SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
-                    "holdout36_clean_servo_torque_motor_sleep_spindles_1455hz")
+                    "holdout36_clean_servo_torque_motor_sleep_spindles_1455hz",
+                    "holdout40_clean_depoled_pzt_grain_switching_windscreen_wiper_1385hz")
 
 
 def _named_on_clean(rows):
@@ -130,8 +136,8 @@ def test_no_effect_named_on_clean_records(rows):
     # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature, HOLDOUT35's capstan cable and
     # HOLDOUT39's critical-state rod are not PI models:
     # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
-    # NOT_PI_CLEAN); HOLDOUT34's stiffening pads and HOLDOUT36's saturating iron may get a saturation and nothing
-    # else (SATURATING_CLEAN)
+    # NOT_PI_CLEAN); HOLDOUT34's stiffening pads, HOLDOUT36's saturating iron and HOLDOUT40's switching PZT may
+    # get a saturation and nothing else (SATURATING_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
@@ -139,8 +145,8 @@ def test_no_effect_named_on_clean_records(rows):
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
                                         "on HOLDOUT35's capstan cable at seed 2 and on HOLDOUT36's saturating "
-                                        "random-field Ising iron (seed 0 here); an asymmetry on HOLDOUT39's "
-                                        "critical-state rod at seeds 1 and 2")
+                                        "random-field Ising iron (seed 0 here) and on HOLDOUT40's switching PZT "
+                                        "disc (every seed)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -157,7 +163,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40) or HOLDOUT39 (round 41). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41) or HOLDOUT40 (round 42). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -184,7 +190,7 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 95/138 runs (32/46 at seed 0) of the combined "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 95/141 runs (32/47 at seed 0) of the combined "
                                         "cases of the forty sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
@@ -210,7 +216,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "cells' bleeding routine's memory at seed 0 and both missed at seed 1, HOLDOUT38's "
                                         "coil's moving mass and swing-arm asymmetry missed at all three seeds, "
                                         "HOLDOUT39's flux creep and flux flow in one superconducting rod missed "
-                                        "at all three seeds)")
+                                        "at all three seeds, HOLDOUT40's domain-wall viscosity beside a logger's "
+                                        "protection diodes read as the diodes' saturation alone at all three seeds)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4

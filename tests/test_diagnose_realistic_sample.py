@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-one sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (46 clean records in all, 5 CPU-seconds). 73 runs at seed 0; 65 were right in round 41
+other set (47 clean records in all, 5 CPU-seconds). 74 runs at seed 0; 65 were right in round 42
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -22,7 +22,8 @@ whose iron is a random-field Ising model, read as a saturation at seed 0, `expla
 SATURATING_CLEAN; HOLDOUT37's in round 39: a push-pull pair of liquid-nanofoam cells, `explained` with nothing named at
 seed 0; HOLDOUT38's in round 40: a rod pushed through friction bushes with free play, `explained` with nothing named at
 seed 0; HOLDOUT39's in round 41: a superconducting rod in Kim's critical state, not a PI core, left unexplained with
-nothing named at seed 0, see NOT_PI_CLEAN).
+nothing named at seed 0, see NOT_PI_CLEAN; HOLDOUT40's in round 42: a soft PZT disc whose grains switch, read as a
+saturation at seed 0, `explained`, counted wrong, see SATURATING_CLEAN).
 """
 
 import os
@@ -58,8 +59,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 73
-    assert sum(r["clean"] for r in rows) == 46
+    assert len(rows) == 74
+    assert sum(r["clean"] for r in rows) == 47
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -71,9 +72,9 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 65/73 right in round 41 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-39, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's, HOLDOUT36's and
-    # HOLDOUT39's counted wrong); at least 62 (85 %):
+    # 65/74 right in round 42 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-40, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's, HOLDOUT36's,
+    # HOLDOUT39's and HOLDOUT40's counted wrong); at least 62 (84 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
@@ -87,10 +88,11 @@ def test_no_effect_named_on_clean_records(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed) "
-                                        "and on HOLDOUT36's random-field Ising iron at seed 0 (round 38)")
+                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed), "
+                                        "on HOLDOUT36's random-field Ising iron at seed 0 (round 38) and on "
+                                        "HOLDOUT40's switching PZT disc at seed 0 (round 42)")
 def test_no_effect_named_on_any_clean_record(rows):
-    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 2
+    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 3
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
 

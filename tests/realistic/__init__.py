@@ -125,8 +125,8 @@ Its core is a bulk (Bi,Pb)-2223 rod's critical state with Kim's field-dependent 
 demagnetising field, in a solenoid, read by a pickup coil and a fluxmeter; a PI model of 12 plays fitted by NNLS leaves
 0.82 ... 1.35 sigma RMS on its clean record (at most 2.9 ... 5.6 sigma), measured in tests/test_realistic_holdout39.py.
 :data:`HOLDOUT40` (``cases_holdout40.py``) was written after HOLDOUT39 was measured, by a session that did not read how
-the diagnosis decides, to be run once for the next round's measurement; it is kept out of :data:`ALL` until then. Its
-core is a soft PZT disc whose grains switch by 180 deg (each a relay of the local field with the thresholds (b +- E_c) /
+the diagnosis decides, and run once for the forty-second round's measurement (docs/diagnose.md, commit 7a59e35, 16 of
+30 runs right); it is part of :data:`ALL` since. Its core is a soft PZT disc whose grains switch by 180 deg (each a relay of the local field with the thresholds (b +- E_c) /
 cos(theta): Hwang, Lynch & McMeeking's switching criterion, log-normal coercive fields, random internal bias fields),
 the switched polarisation's depolarising field in the mean-field approximation, AC-depoled before every record but the
 initial-state case's, read by a charge amplifier; a PI model of 12 plays fitted by NNLS leaves 0.87 ... 1.30 sigma RMS
@@ -180,7 +180,7 @@ ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HO
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
        **HOLDOUT17, **HOLDOUT18, **HOLDOUT19, **HOLDOUT20, **HOLDOUT21, **HOLDOUT22, **HOLDOUT23, **HOLDOUT24,
        **HOLDOUT25, **HOLDOUT26, **HOLDOUT27, **HOLDOUT28, **HOLDOUT29, **HOLDOUT30, **HOLDOUT31, **HOLDOUT32,
-       **HOLDOUT33, **HOLDOUT34, **HOLDOUT35, **HOLDOUT36, **HOLDOUT37, **HOLDOUT38, **HOLDOUT39}
+       **HOLDOUT33, **HOLDOUT34, **HOLDOUT35, **HOLDOUT36, **HOLDOUT37, **HOLDOUT38, **HOLDOUT39, **HOLDOUT40}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
