@@ -23,6 +23,7 @@ from realistic import mechanisms31 as m31
 from realistic import signals31 as s31
 from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
                                       _linear_misfit, _rms)
+from realistic.set_checks import play_matrix as _play_matrix
 
 pytestmark = pytest.mark.slow
 
@@ -59,16 +60,6 @@ def _plays(v, r, w, w0, state=0.0):
         z = np.minimum(np.maximum(z, x - r), x + r)
         out[k] = w @ z
     return w0 * np.asarray(v, float) + out, z
-
-
-def _play_matrix(v, r):
-    """Every play's output (columns) for thresholds r, from the virgin state."""
-    z = np.zeros(len(r))
-    out = np.empty((len(v), len(r)))
-    for k, x in enumerate(np.asarray(v, float).tolist()):
-        z = np.minimum(np.maximum(z, x - r), x + r)
-        out[k] = z
-    return out
 
 
 def _pi_grid(V0, c, n, top, cells=4000):

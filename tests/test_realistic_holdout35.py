@@ -15,7 +15,7 @@ from functools import lru_cache
 import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
-from scipy.optimize import brentq, isotonic_regression, nnls
+from scipy.optimize import brentq, isotonic_regression
 
 from realistic import HOLDOUT35, family
 from realistic import cases_holdout35 as c35
@@ -23,6 +23,7 @@ from realistic import mechanisms35 as m35
 from realistic import signals35 as s35
 from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
                                       _linear_misfit, _rms)
+from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
 pytestmark = pytest.mark.slow
 
@@ -49,28 +50,6 @@ def _rec(name, seed):
 
 def _core(e, v, state=None):
     return c35._core_of(e, v, state=state)
-
-
-def _play_matrix(v, r):
-    """Every play's output (columns) for thresholds r, from the virgin state (written here from the play's
-    definition)."""
-    z = np.zeros(len(r))
-    out = np.empty((len(v), len(r)))
-    for k, x in enumerate(np.asarray(v, float).tolist()):
-        z = np.minimum(np.maximum(z, x - r), x + r)
-        out[k] = z
-    return out
-
-
-def _pi_fit_rms(y, v, n_plays=12):
-    """The RMS and largest residual of a PI model of n_plays plays of v (thresholds evenly spaced from 0 to the drive's
-    half-span, the first the linear term) and an offset fitted to y by NNLS."""
-    R = np.abs(v).max()
-    r = np.arange(n_plays) * R / n_plays
-    A = np.c_[_play_matrix(v, r), np.ones(len(v)), -np.ones(len(v))]
-    w, _ = nnls(A, y)
-    d = y - A @ w
-    return _rms(d), float(np.abs(d).max())
 
 
 # ---- an independent reference for the cable: the slip fronts written in the force and a per-node loop ----

@@ -22,7 +22,7 @@ from functools import lru_cache
 import numpy as np
 import pytest
 from scipy.integrate import quad, solve_ivp
-from scipy.optimize import isotonic_regression, nnls
+from scipy.optimize import isotonic_regression
 from scipy.special import j0
 
 from realistic import HOLDOUT37, family
@@ -31,6 +31,7 @@ from realistic import mechanisms37 as m37
 from realistic import signals37 as s37
 from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
                                       _linear_misfit, _rms)
+from realistic.set_checks import pi_fit_rms as _pi_fit_rms, seg as _seg
 
 pytestmark = pytest.mark.slow
 
@@ -57,32 +58,6 @@ def _rec(name, seed):
 
 def _core(e, v, states=None):
     return c37._core_of(e, v, states=states)
-
-
-def _play_matrix(v, r):
-    """Every play's output (columns) for thresholds r, from the virgin state (written here from the play's
-    definition)."""
-    z = np.zeros(len(r))
-    out = np.empty((len(v), len(r)))
-    for k, x in enumerate(np.asarray(v, float).tolist()):
-        z = np.minimum(np.maximum(z, x - r), x + r)
-        out[k] = z
-    return out
-
-
-def _pi_fit_rms(y, v, n_plays=12):
-    """The RMS and largest residual of a PI model of n_plays plays of v (thresholds evenly spaced from 0 to the drive's
-    half-span, the first the linear term) and an offset fitted to y by NNLS."""
-    R = np.abs(v).max()
-    r = np.arange(n_plays) * R / n_plays
-    A = np.c_[_play_matrix(v, r), np.ones(len(v)), -np.ones(len(v))]
-    w, _ = nnls(A, y)
-    d = y - A @ w
-    return _rms(d), float(np.abs(d).max())
-
-
-def _seg(a, b, n=60):
-    return np.linspace(a, b, n + 1)[1:]
 
 
 # ---- independent references for the pore network ----

@@ -26,7 +26,7 @@ from functools import lru_cache
 import numpy as np
 import pytest
 from scipy.integrate import cumulative_trapezoid, solve_ivp
-from scipy.optimize import brentq, isotonic_regression, nnls
+from scipy.optimize import brentq, isotonic_regression
 
 from realistic import HOLDOUT39, family
 from realistic import cases_holdout39 as c39
@@ -34,6 +34,7 @@ from realistic import mechanisms39 as m39
 from realistic import signals39 as s39
 from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
                                       _linear_misfit, _rms)
+from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms, seg as _seg
 
 pytestmark = pytest.mark.slow
 
@@ -60,40 +61,6 @@ def _rec(name, seed):
 
 def _core(e, v, z0=None):
     return c39._core_of(e, v, z0=z0)
-
-
-def _play_matrix(v, r):
-    """Every play's output (columns) for thresholds r, from the virgin state (written here from the play's
-    definition)."""
-    z = np.zeros(len(r))
-    out = np.empty((len(v), len(r)))
-    for k, x in enumerate(np.asarray(v, float).tolist()):
-        z = np.minimum(np.maximum(z, x - r), x + r)
-        out[k] = z
-    return out
-
-
-def _pi_fit_rms(y, v, n_plays=12):
-    """The RMS and largest residual of a PI model of n_plays plays of v (thresholds evenly spaced from 0 to the drive's
-    half-span, the first the linear term) and an offset fitted to y by NNLS."""
-    R = np.abs(v).max()
-    r = np.arange(n_plays) * R / n_plays
-    A = np.c_[_play_matrix(v, r), np.ones(len(v)), -np.ones(len(v))]
-    w, _ = nnls(A, y)
-    d = y - A @ w
-    return _rms(d), float(np.abs(d).max())
-
-
-def _seg(a, b, n=60):
-    return np.linspace(a, b, n + 1)[1:]
-
-
-def _holds(v, min_len):
-    """The runs (start, stop) of at least min_len samples over which v stays exactly constant."""
-    same = np.r_[False, np.diff(v) == 0.0, False]
-    edges = np.flatnonzero(np.diff(same.astype(int)))
-    runs = [(a, b + 1) for a, b in zip(edges[::2], edges[1::2])]
-    return [(a, b) for a, b in runs if b - a >= min_len]
 
 
 # ---- independent references for the rod ----

@@ -67,6 +67,7 @@ from scipy.optimize import brentq
 from . import mechanisms31 as m31
 from . import signals31 as s31
 from .record import case_set, finish
+from .set_tools import grid as _grid
 
 HOLDOUT31, case, _rng = case_set("holdout31_", 31000)
 
@@ -83,11 +84,6 @@ def _core_of(core, v, state=None, return_state=False):
     if return_state:
         return core["gain"] * out[0], out[1]
     return core["gain"] * out
-
-
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
 
 
 # ---- clean ----

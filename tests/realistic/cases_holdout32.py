@@ -66,6 +66,7 @@ from scipy.optimize import brentq
 from . import mechanisms32 as m32
 from . import signals32 as s32
 from .record import case_set, finish
+from .set_tools import grid as _grid, scale as _scale
 
 HOLDOUT32, case, _rng = case_set("holdout32_", 32000)
 
@@ -85,11 +86,6 @@ def _core_of(core, v, state=None, return_state=False):
     return core["gain"] * out
 
 
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
 def _balanced(make, lo=0.85, tries=200):
     """Calls make() -> (x, *rest) until x's weaker side reaches lo of its stronger; returns its result."""
     for _ in range(tries):
@@ -98,10 +94,6 @@ def _balanced(make, lo=0.85, tries=200):
         if min(x.max(), -x.min()) >= lo * np.abs(x).max():
             return out
     raise RuntimeError("no balanced drive drawn")
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
 
 
 # ---- clean ----

@@ -77,6 +77,7 @@ from scipy.optimize import brentq
 from . import mechanisms33 as m33
 from . import signals33 as s33
 from .record import case_set, finish
+from .set_tools import grid as _grid, scale as _scale
 
 HOLDOUT33, case, _rng = case_set("holdout33_", 33000)
 
@@ -112,11 +113,6 @@ def _core_of(core, v, state=None, return_state=False):
     return (out, st) if return_state else out
 
 
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
 def _balanced(make, lo=0.85, tries=200):
     """Calls make() -> (x, *rest) until x's weaker side reaches lo of its stronger; returns its result."""
     for _ in range(tries):
@@ -125,10 +121,6 @@ def _balanced(make, lo=0.85, tries=200):
         if min(x.max(), -x.min()) >= lo * np.abs(x).max():
             return out
     raise RuntimeError("no balanced drive drawn")
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
 
 
 def _unipolar_bias(rng):

@@ -64,6 +64,14 @@ from scipy.optimize import brentq
 from . import mechanisms34 as m34
 from . import signals34 as s34
 from .record import case_set, finish
+from .set_tools import fits as _fits, grid as _grid, scale as _scale
+from .set_tools import balanced
+
+
+def _balanced(make, lo=0.85, tries=200):
+    """:func:`.set_tools.balanced` with the 200 tries this set drew with."""
+    return balanced(make, lo, tries)
+
 
 HOLDOUT34, case, _rng = case_set("holdout34_", 34000)
 
@@ -97,33 +105,6 @@ def _core_of(core, v, state=None, return_state=False):
     x, st = m34.pad_stage(F, _bed(core), core["kf"], state=state, return_state=True)
     out = core["gain"] * x
     return (out, st) if return_state else out
-
-
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
-def _fits(dt, T_end):
-    """Whether a programme of T_end s fits in a record of at most 40,000 samples (it ends at rest inside the record)."""
-    return T_end < 39_990 * dt
-
-
-def _balanced(make, lo=0.85, tries=200):
-    """Calls make() -> (x, *rest) or None (a programme too long for the record) until x's weaker side reaches lo of its
-    stronger; returns its result."""
-    for _ in range(tries):
-        out = make()
-        if out is None:
-            continue
-        x = out[0]
-        if min(x.max(), -x.min()) >= lo * np.abs(x).max():
-            return out
-    raise RuntimeError("no balanced drive drawn")
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
 
 
 # ---- clean ----

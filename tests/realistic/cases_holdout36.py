@@ -63,11 +63,11 @@ effects' sizes beyond a gain and an offset on the core (seeds 0 ... 2) are state
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import mechanisms36 as m36
 from . import signals36 as s36
 from .record import case_set, finish
+from .set_tools import balanced as _balanced, fits as _fits, grid as _grid, scale as _scale, solve_for as _solve_for
 
 HOLDOUT36, case, _rng = case_set("holdout36_", 36000)
 
@@ -98,38 +98,6 @@ def _core_of(core, v, state=None, return_state=False):
                             core["chi"])
     out = core["gain"] * B
     return (out, st) if return_state else out
-
-
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
-def _fits(dt, T_end):
-    """Whether a programme of T_end s fits in a record of at most 40,000 samples (it ends at rest inside the record)."""
-    return T_end < 39_990 * dt
-
-
-def _balanced(make, lo=0.85, tries=400):
-    """Calls make() -> (x, *rest) or None (a programme too long for the record) until x's weaker side reaches lo of its
-    stronger; returns its result."""
-    for _ in range(tries):
-        out = make()
-        if out is None:
-            continue
-        x = out[0]
-        if min(x.max(), -x.min()) >= lo * np.abs(x).max():
-            return out
-    raise RuntimeError("no balanced drive drawn")
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
-
-
-def _solve_for(fn, target, lo, hi):
-    """The parameter in (lo, hi) where fn reaches target (brentq to 1e-15)."""
-    return brentq(lambda p: fn(p) - target, lo, hi, xtol=1e-15)
 
 
 # ---- clean ----

@@ -67,11 +67,11 @@ effects' sizes beyond a gain and an offset on the core (seeds 0 ... 2) are state
 import math
 
 import numpy as np
-from scipy.optimize import brentq
 
 from . import mechanisms37 as m37
 from . import signals37 as s37
 from .record import case_set, finish
+from .set_tools import balanced as _balanced, fits as _fits, grid as _grid, scale as _scale, solve_for as _solve_for
 
 HOLDOUT37, case, _rng = case_set("holdout37_", 37000)
 
@@ -153,36 +153,6 @@ def _port_history_states(core, pA_hist, pB_hist):
     fA, fB = _foams(core)
     sA, sB = _run_in_states(core)
     return m37.foam_cell(fA, sA, pA_hist)[1], m37.foam_cell(fB, sB, pB_hist)[1]
-
-
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
-def _fits(dt, T_end):
-    """Whether a programme of T_end s fits in a record of at most 40,000 samples (it ends at rest inside it)."""
-    return T_end < 39_990 * dt
-
-
-def _balanced(make, lo=0.85, tries=400):
-    """Calls make() -> (x, *rest) or None until x's weaker side reaches lo of its stronger; returns its result."""
-    for _ in range(tries):
-        out = make()
-        if out is None:
-            continue
-        x = out[0]
-        if min(x.max(), -x.min()) >= lo * np.abs(x).max():
-            return out
-    raise RuntimeError("no balanced drive drawn")
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
-
-
-def _solve_for(fn, target, lo, hi):
-    return brentq(lambda p: fn(p) - target, lo, hi, xtol=1e-15)
 
 
 # ---- clean ----

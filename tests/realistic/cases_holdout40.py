@@ -62,6 +62,7 @@ import numpy as np
 from . import mechanisms40 as m40
 from . import signals40 as s40
 from .record import case_set, finish
+from .set_tools import balanced as _balanced, fits as _fits, grid as _grid, scale as _scale
 
 HOLDOUT40, case, _rng = case_set("holdout40_", 40000)
 
@@ -92,28 +93,6 @@ def _viscous_of(core, v, dt, tau):
     return m40.reading(core, e, m40.lag(m40.polarisation(core, e), dt, tau))
 
 
-def _grid(dt, T, lo=10_050, hi=40_000):
-    n = min(max(int(T / dt), lo), hi)
-    return np.arange(n) * dt
-
-
-def _fits(dt, T_end):
-    """Whether a programme of T_end s fits in a record of at most 40,000 samples (it ends at rest inside it)."""
-    return T_end < 39_990 * dt
-
-
-def _balanced(make, lo=0.85, tries=400):
-    """Calls make() -> (x, *rest) or None until x's weaker side reaches lo of its stronger; returns its result."""
-    for _ in range(tries):
-        out = make()
-        if out is None:
-            continue
-        x = out[0]
-        if min(x.max(), -x.min()) >= lo * np.abs(x).max():
-            return out
-    raise RuntimeError("no balanced drive drawn")
-
-
 def _knotted(rng, dt, gen, kind="cyc"):
     """A balanced bipolar drive from a knot programme gen(rng) -> (knots, T_end)."""
     def make():
@@ -133,10 +112,6 @@ def _unipolar(rng, dt, gen):
     p = s40.knots_eval(t, kn)
     top = rng.uniform(88.0, 97.0)
     return t, kn, p, top, top * p / p.max()
-
-
-def _scale(x, amp):
-    return amp * x / np.abs(x).max()
 
 
 def _stroke(h):

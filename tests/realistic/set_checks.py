@@ -1,0 +1,49 @@
+"""Small tools the later sets' law tests (``tests/test_realistic_holdoutNN.py``, HOLDOUT31 on)
+share: every play's output written from the play's definition, the closeness of a record to a
+Prandtl-Ishlinskii model (12 plays fitted by NNLS), a segment of a branch and the holds of a
+drive. Written once here (they had been copied into every set's test); each test binds them under
+its old private names.
+"""
+
+import numpy as np
+from scipy.optimize import nnls
+
+
+def rms(x):
+    """The root mean square of x (a float)."""
+    return float(np.sqrt(np.mean(np.square(x))))
+
+
+def play_matrix(v, r):
+    """Every play's output (columns) for thresholds r, from the virgin state (written here from the play's
+    definition)."""
+    z = np.zeros(len(r))
+    out = np.empty((len(v), len(r)))
+    for k, x in enumerate(np.asarray(v, float).tolist()):
+        z = np.minimum(np.maximum(z, x - r), x + r)
+        out[k] = z
+    return out
+
+
+def pi_fit_rms(y, v, n_plays=12):
+    """The RMS and largest residual of a PI model of n_plays plays of v (thresholds evenly spaced from 0 to the drive's
+    half-span, the first the linear term) and an offset fitted to y by NNLS."""
+    R = np.abs(v).max()
+    r = np.arange(n_plays) * R / n_plays
+    A = np.c_[play_matrix(v, r), np.ones(len(v)), -np.ones(len(v))]
+    w, _ = nnls(A, y)
+    d = y - A @ w
+    return rms(d), float(np.abs(d).max())
+
+
+def seg(a, b, n=60):
+    """n points from a (excluded) to b (included)."""
+    return np.linspace(a, b, n + 1)[1:]
+
+
+def holds(v, min_len):
+    """The runs (start, stop) of at least min_len samples over which v stays exactly constant."""
+    same = np.r_[False, np.diff(v) == 0.0, False]
+    edges = np.flatnonzero(np.diff(same.astype(int)))
+    runs = [(a, b + 1) for a, b in zip(edges[::2], edges[1::2])]
+    return [(a, b) for a, b in runs if b - a >= min_len]
