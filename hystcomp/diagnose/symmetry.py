@@ -103,7 +103,7 @@ def input_balance(vmin, vmax, origin):
 def core_shape(kw, say):
     """Read an asymmetry named only as asymmetric envelopes that are mostly
     point symmetric, on a record driven to both sides, as the core's shape,
-    not an effect (the search's step 10, since round 42): its
+    not an effect (the search's step 11 in docs/diagnose.md, since round 42): its
     :func:`antisymmetric_share` below :data:`POINT_SYMMETRIC` and the
     record's :func:`input_balance` at least :data:`BALANCED`.
 
