@@ -9,7 +9,7 @@ import numpy as np
 
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
 
-SCHEMA_VERSION = 23
+SCHEMA_VERSION = 24
 
 
 def _jsonable(x):
@@ -337,7 +337,7 @@ class Diagnosis:
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 23; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 24; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -360,7 +360,9 @@ class Diagnosis:
         ``paired`` and ``small_later_step`` in a step's ``evidence``, 20
         ``held_out_input_share``, 21 ``start_in_input_range``, 22
         ``asymmetry_antisymmetric_share`` and ``input_balance``, 23
-        ``core_shape`` and the steps' ``core_shape``).
+        ``core_shape`` and the steps' ``core_shape``, 24 ``creep_or_trend``
+        in the ``evidence`` of a step where creep was taken over a drift on a
+        near tie held out).
 
         Returns
         -------
@@ -458,6 +460,9 @@ class Diagnosis:
                     bic = told["training_bic_change"]
                     lines.append(head + f"; the training part, which holds the record's start, takes {st['effect']} "
                                  f"(its BIC lower by {bic[a['kind']] - bic[told['taken']]:.0f})")
+                elif a["kind"] == (st["evidence"].get("creep_or_trend") or {}).get("held_out_chose"):
+                    lines.append(head + "; creep, which the input's steps draw (a drift draws from time alone), "
+                                 "is taken on the near tie")
                 else:
                     lines.append(head + ": the record does not tell them apart")
         for rv in getattr(self, "revisions", []):

@@ -18,7 +18,7 @@ from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
 from .signatures import one_rate_tie
 from .small_steps import small_later_steps
-from .start_or_trend import start_or_trend
+from .start_or_trend import creep_or_trend, start_or_trend
 from .symmetry import antisymmetric_share, core_shape, input_balance
 
 #: the canonical effect names, in the order the candidates are tried
@@ -439,6 +439,10 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                                              trials[j[1]][0].occam_rank, -j[0]))[1]
             # a drift and an initial state that gain alike held out: the training fit decides
             kind, told = start_or_trend(kind, ok, AMBIGUOUS)
+            # a drift and creep that gain alike held out: creep, which the input's steps draw
+            crept = None
+            if told is None:
+                kind, crept = creep_or_trend(kind, ok, AMBIGUOUS)
             part, st, pt, _ = trials[kind]
             # joint refit of every nonlinear parameter, warm-started
             n_par = len(st.parameters(ctx))
@@ -454,6 +458,9 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
                 say(f"step {len(chosen)}: {part.effect} ({kind}) rather than {PARTS[told['held_out_chose']].effect}: "
                     f"a near tie held out, training BIC {told['training_bic_change'][kind]:.1f} against "
                     f"{told['training_bic_change'][told['held_out_chose']]:.1f}")
+            if crept is not None:
+                steps[-1]["evidence"]["creep_or_trend"] = crept
+                say(f"step {len(chosen)}: creep rather than drift ({crept['held_out_chose']}): a near tie held out")
             say(f"added {part.effect} ({part.kind}): held-out RMS {cur_val:.4g} -> {rms_val(pt):.4g}")
             struct, cur = st, pt
         again = holds_carried_structure(noise_info, rms_val(cur), rec.y_span, rec.n)
