@@ -85,3 +85,21 @@ def test_log_creep_is_named_creep_with_the_drift_a_near_tie(log_creep):
     held = ~rep._rec.train
     rms = float(np.sqrt(np.mean((rec.y - rep.model.simulate(rec.v))[held] ** 2)))
     assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+
+
+def test_a_step_the_revision_gave_to_another_effect_says_so():
+    # HOLDOUT36's Snoek after-effect at seed 1: creep is taken at the step on the near tie; with the later
+    # effects in, the revision puts the shapeless drift back in its place (it fits better held out), so
+    # the step's line names the drift but describes the creep part the step took: it says both
+    name = [n for n in ALL if n.startswith("holdout36_creep_snoek")][0]
+    rec = ALL[name](1)
+    rep = diagnose(rec.t, rec.v, rec.y, progress=False)
+    st = rep.steps[0]
+    assert st["evidence"]["creep_or_trend"]["taken"] == "creep_lags"
+    rv = st["evidence"]["revised"]
+    assert (rv["replaced"], rv["effect_before"], rv["effect_after"]) == ("creep_lags", "creep", "drift")
+    assert st["effect"] == "drift"
+    text = rep.report()
+    assert ("step 1: drift (taken as creep, replaced in the revision) -- creep operators (lags of the input and "
+            "of the hysteresis output)") in text
+    assert f"revision: step 1's creep_lags replaced by {rv['by']} (drift)" in text

@@ -434,6 +434,10 @@ class Diagnosis:
             ext = st["evidence"]["extension"]
             sig = st["evidence"]["signature"]
             shape = ", read as the core's shape" if st.get("core_shape") else ""
+            rv = st["evidence"].get("revised") or {}
+            if rv.get("by") and rv["effect_after"] != rv["effect_before"]:
+                # the line reads the step as it was taken; the revision's line below says what replaced it
+                shape += f" (taken as {rv['effect_before']}, replaced in the revision)"
             lines.append(f"step {i}: {st['effect']}{shape} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
             lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
