@@ -8,7 +8,7 @@ from ..identify.parts import Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import Structure, VariableProjection
 
-__all__ = ["base_context", "play_thresholds", "rest_point", "REST_BIC", "LOADING_PLAYS"]
+__all__ = ["base_context", "play_thresholds", "rest_point", "step_kind", "REST_BIC", "LOADING_PLAYS"]
 
 
 def base_context(rec, n_thresholds=20, thresholds=None):
@@ -113,3 +113,18 @@ def play_thresholds(span, n):
         return np.arange(n) / n
     m = n - LOADING_PLAYS
     return np.concatenate([np.arange(m) / m * half, half + np.arange(LOADING_PLAYS) / LOADING_PLAYS * (1.0 - half)])
+
+
+def step_kind(step):
+    """The part that draws a search step's effect: the revision's
+    replacement when the revision put one in, else the part the step took.
+
+    Examples
+    --------
+    >>> step_kind({"evidence": {"extension": {"kind": "creep_lags"}}})
+    'creep_lags'
+    >>> step_kind({"evidence": {"extension": {"kind": "creep_lags"}, "revised": {"by": "event_drift"}}})
+    'event_drift'
+    """
+    ev = step["evidence"]
+    return (ev.get("revised") or {}).get("by") or ev["extension"]["kind"]

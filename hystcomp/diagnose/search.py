@@ -10,7 +10,7 @@ from ..identify.parts_output import one_sided
 from ..identify.parallel_fits import optimise_all
 from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
-from .base import REST_BIC, base_context, play_thresholds, rest_point  # noqa: F401
+from .base import REST_BIC, base_context, play_thresholds, rest_point, step_kind  # noqa: F401
 from .off_centre import off_centre_test
 from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carried_structure, noise_floor
 from .resolution import finer_core
@@ -712,7 +712,7 @@ def _alternatives(steps, chosen):
         if st.get("dropped") or st.get("tentative"):
             continue
         acc = st["evidence"].get("acceptable", {})
-        kind = (st["evidence"].get("revised") or {}).get("by") or st["evidence"]["extension"]["kind"]
+        kind = step_kind(st)
         gain = acc.get(kind)
         if gain is None:
             continue        # a paired step, or a part put in by the revision

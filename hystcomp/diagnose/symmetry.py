@@ -38,6 +38,8 @@ asymmetry.
 
 import numpy as np
 
+from .base import step_kind
+
 #: below this share of the envelopes' departure from a PI core reversed by
 #: v -> -v, asymmetric envelopes are the core's shape (:func:`core_shape`)
 POINT_SYMMETRIC = 0.35
@@ -125,12 +127,7 @@ def core_shape(kw, say):
         return kw
     named = [i for i, st in enumerate(kw["steps"])
              if st["effect"] == "asymmetry" and not st.get("dropped") and not st.get("tentative")]
-
-    def kind(st):
-        ev = st["evidence"]
-        return (ev.get("revised") or {}).get("by") or ev["extension"].get("kind")
-
-    if not named or any(kind(kw["steps"][i]) != "asymmetric_envelopes" for i in named):
+    if not named or any(step_kind(kw["steps"][i]) != "asymmetric_envelopes" for i in named):
         return kw
     sym = round(100 * (1.0 - share))
     why = (f"the asymmetric envelopes are {sym} % point symmetric (reversed share {share:.2f} < "
