@@ -43,8 +43,9 @@ HOLDOUT37 was run once for the thirty-ninth round's measurement (12 of 30 right)
 HOLDOUT38 was run once for the fortieth round's measurement (20 of 30 right) and is part of ALL since.
 HOLDOUT39 was run once for the forty-first round's measurement (13 of 30 right) and is part of ALL since.
 HOLDOUT40 was run once for the forty-second round's measurement (16 of 30 right) and is part of ALL since.
+HOLDOUT41 was run once for the forty-third round's measurement (26 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout40|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout41|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 
