@@ -36,13 +36,14 @@ keeps moving in the direction of the last step, Kelvin-Voigt creep), a drift
 from time alone, and a drift of no set shape (a broken line in time) can draw
 any slow motion, creep's relaxations among them. Unlike a memory at the
 start, the training part does not tell them apart: there too the broken
-line follows the relaxations (tried on the 12 runs of the forty-one sets
-where the two came within 10 % of each other held out, the lower training
-BIC took the drift and left 4 of them worse). But the near ties themselves
-point one way: on those forty-one sets (1,275 runs, round 42) a creep part
-came within 10 % of a chosen drift's held-out gain at 10 steps, all on
-records whose labels hold creep and no drift, and on none of the 141 runs
-whose labels hold a drift. So when the step's choice is a drift and the
+line follows the relaxations (tried as a third side of :func:`start_or_trend`
+on the 12 runs of the forty-one sets where creep came within 10 % of a
+drift or an initial state held out, the lower training BIC mended 1 and
+left 4 worse). But the near ties themselves point one way: on those
+forty-one sets (1,275 runs, round 42) creep and a drift came within 10 %
+of each other's held-out gain at 10 steps (a drift chosen at 5, creep at
+5), all on records whose labels hold creep and no drift, and at no step of
+the 201 runs whose labels hold a drift. So when the step's choice is a drift and the
 creep part passed every acceptance rule at the step with a held-out gain
 within :data:`~hystcomp.diagnose.search.AMBIGUOUS` of the best, creep is
 taken (:func:`creep_or_trend`); the drift stays a near tie in the report.
