@@ -1,4 +1,4 @@
-"""A memory at the record's start or a drift: told apart where they differ.
+"""A memory at the record's start, creep or a drift: told apart where they differ.
 
 An unknown initial state (a preload history, a memory left by earlier use)
 misfits the record only until the input's first full excursion: from there on
