@@ -1,7 +1,7 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; ROUND43): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
 Every case of the tuning, held-out and HOLDOUT2-41 sets of ``tests/realistic`` (one seed each
