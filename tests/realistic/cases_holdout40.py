@@ -61,6 +61,7 @@ import numpy as np
 
 from . import mechanisms40 as m40
 from . import signals40 as s40
+from . import set_tools
 from .record import case_set, finish
 from .set_tools import balanced as _balanced, fits as _fits, grid as _grid, scale as _scale
 
@@ -95,28 +96,14 @@ def _viscous_of(core, v, dt, tau):
 
 def _knotted(rng, dt, gen, kind="cyc"):
     """A balanced bipolar drive from a knot programme gen(rng) -> (knots, T_end)."""
-    def make():
-        kn, T_end = gen(rng)
-        if not _fits(dt, T_end):
-            return None
-        t = _grid(dt, T_end)
-        return s40.knots_eval(t, kn, kind=kind), t, kn
-    return _balanced(make)
+    return set_tools.knotted(rng, dt, gen, lambda t, kn: s40.knots_eval(t, kn, kind=kind))
 
 
 def _unipolar(rng, dt, gen):
-    kn, T_end = gen(rng)
-    while not _fits(dt, T_end):
-        kn, T_end = gen(rng)
-    t = _grid(dt, T_end)
-    p = s40.knots_eval(t, kn)
-    top = rng.uniform(88.0, 97.0)
-    return t, kn, p, top, top * p / p.max()
+    return set_tools.unipolar(rng, dt, gen, s40.knots_eval)
 
 
-def _stroke(h):
-    c = (h.max() + h.min()) / 2
-    return c, np.abs(h - c).max()
+_stroke = set_tools.stroke
 
 
 # ---- clean ----

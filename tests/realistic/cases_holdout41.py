@@ -55,8 +55,9 @@ import numpy as np
 
 from . import mechanisms41 as m41
 from . import signals41 as s41
+from . import set_tools
 from .record import case_set, finish
-from .set_tools import balanced as _balanced, fits as _fits, grid as _grid, scale as _scale
+from .set_tools import scale as _scale
 
 HOLDOUT41, case, _rng = case_set("holdout41_", 41000)
 
@@ -88,28 +89,14 @@ def _mobile_of(core, v, dt, tau_w):
 
 def _knotted(rng, dt, gen, kind="quintic"):
     """A balanced bipolar drive from a knot programme gen(rng) -> (knots, T_end)."""
-    def make():
-        kn, T_end = gen(rng)
-        if not _fits(dt, T_end):
-            return None
-        t = _grid(dt, T_end)
-        return s41.knots_at(t, kn, kind=kind), t, kn
-    return _balanced(make)
+    return set_tools.knotted(rng, dt, gen, lambda t, kn: s41.knots_at(t, kn, kind=kind))
 
 
 def _unipolar(rng, dt, gen):
-    kn, T_end = gen(rng)
-    while not _fits(dt, T_end):
-        kn, T_end = gen(rng)
-    t = _grid(dt, T_end)
-    p = s41.knots_at(t, kn)
-    top = rng.uniform(88.0, 97.0)
-    return t, kn, p, top, top * p / p.max()
+    return set_tools.unipolar(rng, dt, gen, s41.knots_at)
 
 
-def _stroke(h):
-    c = (h.max() + h.min()) / 2
-    return c, np.abs(h - c).max()
+_stroke = set_tools.stroke
 
 
 # ---- clean ----
