@@ -139,6 +139,16 @@ landscape of defects and held by the grain's magnetostatic restoring force (Neel
 quasi-static limit of the ABBM model: each wall slides to the first rest in the direction of its force), read by a
 fluxmeter; a PI model of 12 plays fitted by NNLS leaves 0.84 ... 1.86 sigma RMS on its clean record (at most 3.8 ... 6.2
 sigma), measured in tests/test_realistic_holdout41.py.
+:data:`HOLDOUT42` (``cases_holdout42.py``) was written after HOLDOUT41 was measured, by a session that did not read how
+the diagnosis decides, to be run once for the next round's measurement; not yet measured, and kept out of :data:`ALL`
+until then.
+Its core is a NiTi shape-memory wire against a steel bias spring in a Peltier-controlled oil bath, read by a dial
+indicator at the load: 1500 segments, each a relay of the effective temperature T - sigma / C between its own M_i and
+A_i = M_i + w_i (Clausius-Clapeyron; Tanaka 1986, Liang & Rogers 1990, Ortin 1992), the shared stress falling as
+martensite lengthens the wire against the spring (a negative feedback, segments stopping part-transformed), settled at
+its loop's middle by a decaying thermal cycling before every record but the initial-state case's; a PI model of 12
+plays fitted by NNLS leaves 3.5 ... 3.8 sigma RMS on its clean record (at most 15.2 ... 16.0 sigma), measured in
+tests/test_realistic_holdout42.py: farther from a PI model than the sets before it.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -184,6 +194,7 @@ from .cases_holdout38 import HOLDOUT38  # noqa: F401
 from .cases_holdout39 import HOLDOUT39  # noqa: F401
 from .cases_holdout40 import HOLDOUT40  # noqa: F401
 from .cases_holdout41 import HOLDOUT41  # noqa: F401
+from .cases_holdout42 import HOLDOUT42  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -198,4 +209,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT19", "HOLDOUT20", "HOLDOUT21", "HOLDOUT22", "HOLDOUT23", "HOLDOUT24", "HOLDOUT25", "HOLDOUT26",
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
-           "HOLDOUT41", "ALL"]
+           "HOLDOUT41", "HOLDOUT42", "ALL"]
