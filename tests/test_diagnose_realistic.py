@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; SLOW44 in round 44, 445, with HOLDOUT42's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-41 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-42 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,10 +49,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1048/1305 (80.3 %) over the forty-two sets in round 43
-# (the forty-one earlier sets 1022/1275: round 43 took creep over a drift on a near tie, which mended two runs;
-# HOLDOUT41 26/30 when fresh and as committed), so it stays open.
-# At seed 0, as run here, 355/435 (81.6 %), 391.5 needed, so
+# The issue's criterion is over three seeds: 1054/1335 (79.0 %) over the forty-three sets in round 44
+# (the forty-two earlier sets 1048/1305 as in round 43; HOLDOUT42 6/30 when fresh and as committed: a shape-memory
+# wire whose core is far from a PI model), so it stays open.
+# At seed 0, as run here, 357/445 (80.2 %), 400.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -63,22 +63,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40) and 26/30 (HOLDOUT41)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41) and 6/30 (HOLDOUT42)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1048/1305 right over three seeds of the forty-two sets "
-                                         "(80.3 %); at seed 0 355/435 (81.6 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1054/1335 right over three seeds of the forty-three sets "
+                                         "(79.0 %); at seed 0 357/445 (80.2 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 355/435 right at seed 0 in round 43 (81.6 %; 345/425 in round 42); at least 345, ten runs of
+    # regression guard: 357/445 right at seed 0 in round 44 (80.2 %; 355/435 in round 43); at least 347, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 435
-    assert right >= 345, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 445
+    assert right >= 347, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -96,11 +96,16 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: in round 41: unexplained with nothing named at 1.33 noise floors at seed 0; at seeds 1 and 2 an asymmetry
 #: (asymmetric envelopes, whose curvatures of nearly opposite sign draw loops that narrow towards both ends) was
 #: named and the record `explained` at 1.13 and 1.37, counted wrong; since round 42 those envelopes are read as
-#: the core's shape, not named, and seeds 1 and 2 are right
+#: the core's shape, not named, and seeds 1 and 2 are right. HOLDOUT42's NiTi wire against a bias spring (segments
+#: that transform at absolute temperatures, nearly equal widths, the spring's stress feeding back on every segment:
+#: its loops' sides are sigmoids, 3.5-3.8 sigma from a 12-play PI fit), fresh in round 44: unexplained with nothing
+#: named at 3.60 and 3.17 noise floors at seeds 0 and 1; at seed 2 a saturation and an asymmetry named (`unexplained`
+#: at 2.25), counted wrong
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
-                "holdout39_clean_kim_critical_state_rod_inkjet_carriage_1445hz")
+                "holdout39_clean_kim_critical_state_rod_inkjet_carriage_1445hz",
+                "holdout42_clean_niti_wire_bias_spring_tower_crane_1370hz")
 
 #: clean records whose core stiffens towards the ends of its stroke, which the diagnosis reads as a
 #: saturation: HOLDOUT34's voice-coil stage on Gent rubber pads that stick and slip (the pads'
@@ -134,7 +139,7 @@ def test_no_effect_named_on_clean_records(rows):
     clean = [r for r in rows if r["clean"]]
     assert len(clean) >= 5 and any(r["case"] == "holdout6_clean_triangles_offset_500hz" for r in clean)
     # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature, HOLDOUT35's capstan cable and
-    # HOLDOUT39's critical-state rod are not PI models:
+    # HOLDOUT39's critical-state rod and HOLDOUT42's shape-memory wire are not PI models:
     # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
     # NOT_PI_CLEAN); HOLDOUT34's stiffening pads, HOLDOUT36's saturating iron and HOLDOUT40's switching PZT may
     # get a saturation and nothing else (SATURATING_CLEAN)
@@ -146,7 +151,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
                                         "on HOLDOUT35's capstan cable at seed 2 and on HOLDOUT36's saturating "
                                         "random-field Ising iron (seed 0 here), on HOLDOUT40's switching PZT "
-                                        "disc (every seed) and on HOLDOUT41's pinned-wall ferrite ring at seed 2")
+                                        "disc (every seed), on HOLDOUT41's pinned-wall ferrite ring at seed 2 "
+                                        "and on HOLDOUT42's shape-memory wire at seed 2 (with an asymmetry)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -163,7 +169,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42) or HOLDOUT41 (round 43). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43) or HOLDOUT42 (round 44). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -190,8 +196,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 98/144 runs (33/48 at seed 0) of the combined "
-                                        "cases of the forty-two sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 98/147 runs (33/49 at seed 0) of the combined "
+                                        "cases of the forty-three sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -217,7 +223,10 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "coil's moving mass and swing-arm asymmetry missed at all three seeds, "
                                         "HOLDOUT39's flux creep and flux flow in one superconducting rod missed "
                                         "at all three seeds, HOLDOUT40's domain-wall viscosity beside a logger's "
-                                        "protection diodes read as the diodes' saturation alone at all three seeds)")
+                                        "protection diodes read as the diodes' saturation alone at all three seeds, "
+                                        "HOLDOUT42's integrating converter's delay behind an isolation amplifier's "
+                                        "limiter read as a rate dependence beside the limiter's saturation at all three seeds, "
+                                        "with an asymmetry at seed 0)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
