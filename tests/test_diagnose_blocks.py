@@ -105,19 +105,19 @@ def _split(verdict, effects, left, remaining=(), blocks=False, rec=None):
 
 
 def test_the_blocks_are_taken_for_a_start_the_end_cannot_test():
-    from hystcomp.diagnose.search import _choose_split
+    from hystcomp.diagnose.splits import choose_split
 
     said = []
     # the end's held-out part at the floor, only the start's signature left; the blocks
     # name an initial state and explain the record (HOLDOUT31's shock in transit)
     end = _split("unexplained", [], 0.99, remaining=("initial_state", "delay"))
     blocks = _split("explained", ["initial_state"], 0.98, blocks=True)
-    chosen = _choose_split(end, blocks, said.append)
+    chosen = choose_split(end, blocks, said.append)
     assert chosen["verdict"] == "explained" and chosen["effects"] == ["initial_state"]
     assert chosen["other_split"]["held_out"] == "end" and "cannot test" in chosen["other_split"]["why"]
     # not when the end's held-out part is above the explained limit: that part is not
     # explained, whatever the start does
-    chosen = _choose_split(_split("unexplained", [], 1.6, remaining=("initial_state", "held_out")), blocks,
+    chosen = choose_split(_split("unexplained", [], 1.6, remaining=("initial_state", "held_out")), blocks,
                            said.append)
     assert chosen["verdict"] == "unexplained" and chosen["other_split"]["held_out"] == "blocks"
     # not when no signature stays at the start, nor when the blocks do not explain the
@@ -125,4 +125,4 @@ def test_the_blocks_are_taken_for_a_start_the_end_cannot_test():
     for end, blk in ((_split("unexplained", [], 0.99, remaining=("delay",)), blocks),
                      (end, _split("unexplained", ["initial_state"], 1.2, blocks=True)),
                      (end, _split("explained", ["asymmetry"], 0.98, blocks=True))):
-        assert _choose_split(end, blk, said.append)["other_split"]["held_out"] == "blocks"
+        assert choose_split(end, blk, said.append)["other_split"]["held_out"] == "blocks"

@@ -136,7 +136,7 @@ def test_on_a_seen_record_a_step_the_final_model_needs_is_named():
 
 
 def test_the_split_not_taken_is_summarised_by_the_same_rule():
-    from hystcomp.diagnose.search import _choose_split
+    from hystcomp.diagnose.splits import choose_split
     from test_diagnose_blocks import _split
 
     end = _split("unexplained", ["asymmetry", "initial_state"], 1.5)
@@ -146,7 +146,7 @@ def test_the_split_not_taken_is_summarised_by_the_same_rule():
     blocks = _split("unexplained", ["saturation", "delay"], 1.7, blocks=True)
     blocks["steps"] = [_step("saturation", 30.0), _step("delay", 1.0)]
     blocks["ambiguous"], blocks["stopped"] = {}, "no remaining effect pays"
-    chosen = _choose_split(end, blocks, lambda s: None)
+    chosen = choose_split(end, blocks, lambda s: None)
     # no drift named by the blocks: the end is taken; the blocks' summary names what the rule names
     assert chosen["effects"] == ["asymmetry"] and chosen["tentative"] == ["initial_state"]
     assert chosen["other_split"]["effects"] == ["saturation"] and chosen["other_split"]["tentative"] == ["delay"]

@@ -18,6 +18,7 @@ from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
 from .signatures import one_rate_tie
 from .small_steps import small_later_steps
+from .splits import INTERPOLATED, blocks_may_tell, choose_split
 from .start_or_trend import creep_or_trend, start_or_trend
 from .symmetry import antisymmetric_share, core_shape, input_balance
 
@@ -114,96 +115,14 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
 
         args = (t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick)
         kw = _search(*args, held_out, workers)
-        if held_out == "auto" and _blocks_may_tell(kw, effects):
+        if held_out == "auto" and blocks_may_tell(kw, effects):
             say(f"the held-out end leaves the record unexplained with no {' or '.join(INTERPOLATED)} named; "
                 f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
             other = _search(*args, "blocks", workers)
-            kw = _choose_split(kw, other, say)
+            kw = choose_split(kw, other, say)
         return core_shape(small_later_steps(kw, say), say)
     finally:
         bar.close()
-
-
-#: effects of no set shape in time (broken lines in time, held at their last
-#: level past the fitted part): a held-out end tests them by extrapolation,
-#: which a drift that turns (a thermal cycle) fails; blocks held out between
-#: fitted stretches test them by interpolation
-INTERPOLATED = ("drift", "gain_drift")
-
-
-def _blocks_may_tell(kw, effects):
-    """Whether a search with the end (or one inner block) held out should be
-    re-judged on blocks spread over the record: its verdict is
-    unexplained, the record has a time axis, and a drift or gain drift was
-    a candidate, testable, and not named."""
-    rec = kw["_rec"]
-    return (kw["verdict"] == "unexplained" and rec.dt is not None
-            and any(e in effects and e not in kw["untested"] for e in INTERPOLATED)
-            and not set(kw["effects"]) & set(INTERPOLATED))
-
-
-def _pass_summary(kw):
-    """A search's verdict in brief, for the report of the other split."""
-    rec = kw["_rec"]
-    return {"held_out": "blocks" if len(rec.blocks) > 1 else ("inner" if rec.held_out_in_middle else "end"),
-            "validation": [list(b) for b in rec.held_blocks()], "verdict": kw["verdict"],
-            "effects": list(kw["effects"]), "tentative": list(kw["tentative"]),
-            "rms_heldout": kw["rms_heldout"], "noise_floor": kw["noise_floor"],
-            "noise_floors_left": kw["rms_heldout"] / kw["noise_floor"]}
-
-
-def _start_left_to_blocks(end, blocks):
-    """Whether the end held out could not judge what it left: its held-out
-    residual is within the explained limit and only the record's start keeps
-    a signature (an initial state whose memory the first full excursion wiped
-    out before the held-out end), while the blocks, held out between fitted
-    stretches from :data:`~hystcomp.diagnose.record.BLOCK_FIRST` of the
-    record on and so nearer its start than the end, name an initial state and
-    explain the record."""
-    at_floor = end["rms_heldout"] <= end["explained_limit"] * end["noise_floor"]
-    return (at_floor and "initial_state" in end["remaining"] and "initial_state" not in end["effects"]
-            and blocks["verdict"] == "explained" and "initial_state" in blocks["effects"])
-
-
-def _choose_split(end, blocks, say):
-    """The diagnosis of the two splits to report: the blocks' when they name a
-    drift or gain drift (which the end's did not) and leave fewer noise
-    floors, or when the end's held-out part was at the floor with only the
-    record's start left and the blocks name an initial state and explain the
-    record (:func:`_start_left_to_blocks`); the end's otherwise.  The other is
-    summarised under ``other_split``, with why it was not taken or why it
-    was."""
-    left_end = end["rms_heldout"] / end["noise_floor"]
-    left_blocks = blocks["rms_heldout"] / blocks["noise_floor"]
-    named = [e for e in blocks["effects"] if e in INTERPOLATED]
-    start = _start_left_to_blocks(end, blocks)
-    take = (bool(named) and left_blocks < left_end) or start
-    chosen, other = (blocks, end) if take else (end, blocks)
-    # the summary of the split not taken says what it would name, by the same rules on small later steps
-    # and the core's shape as the one reported (the choice above is made on the splits as searched)
-    quiet = lambda s: None  # noqa: E731
-    summary = _pass_summary(core_shape(small_later_steps(other, quiet), quiet))
-    if start and not (named and left_blocks < left_end):
-        summary["why"] = (f"with the end held out the held-out part was at {left_end:.2f} noise floors, but a "
-                          "signature stayed at the record's start, which an end held out cannot test; with blocks "
-                          f"spread over the record an initial state is named and {left_blocks:.2f} noise floors "
-                          "are left (explained)")
-    elif take:
-        summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors and no "
-                          f"{' or '.join(INTERPOLATED)} was named; with blocks spread over the record "
-                          f"{', '.join(named)} is named and {left_blocks:.2f} noise floors are left: a time "
-                          "effect of no set shape is judged by interpolation, not by extrapolation into the end")
-    else:
-        summary["why"] = ("not taken: with blocks spread over the record "
-                          + (f"{', '.join(named)} is named but {left_blocks:.2f} noise floors are left against "
-                             f"{left_end:.2f} with the end held out" if named else
-                             f"no {' or '.join(INTERPOLATED)} is named either ({left_blocks:.2f} noise floors left)"))
-    say(("taken: " if take else "") + summary["why"])
-    chosen = dict(chosen)
-    chosen["other_split"] = summary
-    chosen["elapsed"] = end["elapsed"] + blocks["elapsed"]
-    chosen["n_evaluations"] = end["n_evaluations"] + blocks["n_evaluations"]
-    return chosen
 
 
 def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds, say, tick, held_out="auto",

@@ -1,0 +1,102 @@
+"""Which held-out split a diagnosis reports: the record's end, or blocks spread
+over it (:func:`choose_split`).
+
+With ``held_out="auto"`` the search holds out the record's end (or one inner
+block, :class:`~hystcomp.diagnose.record.Record`).  A time effect of no set
+shape (a drift that turns, a gain that follows a thermal cycle) is tested
+there by extrapolation, which it may fail although it is there; held out as
+blocks between fitted stretches it is tested by interpolation.  When the
+end's search leaves the record unexplained with such an effect a candidate
+and not named (:func:`blocks_may_tell`), :func:`run_search
+<hystcomp.diagnose.search.run_search>` searches again with blocks held out,
+and :func:`choose_split` decides which diagnosis to report; the other is
+summarised (:func:`pass_summary`) under ``other_split`` with why it was or
+was not taken.  Round 22 added the blocks for drifts; round 34 the start
+that an end cannot test (:func:`start_left_to_blocks`).
+"""
+
+from .small_steps import small_later_steps
+from .symmetry import core_shape
+
+__all__ = ["INTERPOLATED", "blocks_may_tell", "pass_summary", "start_left_to_blocks", "choose_split"]
+
+#: effects of no set shape in time (broken lines in time, held at their last
+#: level past the fitted part): a held-out end tests them by extrapolation,
+#: which a drift that turns (a thermal cycle) fails; blocks held out between
+#: fitted stretches test them by interpolation
+INTERPOLATED = ("drift", "gain_drift")
+
+
+def blocks_may_tell(kw, effects):
+    """Whether a search with the end (or one inner block) held out should be
+    re-judged on blocks spread over the record: its verdict is
+    unexplained, the record has a time axis, and a drift or gain drift was
+    a candidate, testable, and not named."""
+    rec = kw["_rec"]
+    return (kw["verdict"] == "unexplained" and rec.dt is not None
+            and any(e in effects and e not in kw["untested"] for e in INTERPOLATED)
+            and not set(kw["effects"]) & set(INTERPOLATED))
+
+
+def pass_summary(kw):
+    """A search's verdict in brief, for the report of the other split."""
+    rec = kw["_rec"]
+    return {"held_out": "blocks" if len(rec.blocks) > 1 else ("inner" if rec.held_out_in_middle else "end"),
+            "validation": [list(b) for b in rec.held_blocks()], "verdict": kw["verdict"],
+            "effects": list(kw["effects"]), "tentative": list(kw["tentative"]),
+            "rms_heldout": kw["rms_heldout"], "noise_floor": kw["noise_floor"],
+            "noise_floors_left": kw["rms_heldout"] / kw["noise_floor"]}
+
+
+def start_left_to_blocks(end, blocks):
+    """Whether the end held out could not judge what it left: its held-out
+    residual is within the explained limit and only the record's start keeps
+    a signature (an initial state whose memory the first full excursion wiped
+    out before the held-out end), while the blocks, held out between fitted
+    stretches from :data:`~hystcomp.diagnose.record.BLOCK_FIRST` of the
+    record on and so nearer its start than the end, name an initial state and
+    explain the record."""
+    at_floor = end["rms_heldout"] <= end["explained_limit"] * end["noise_floor"]
+    return (at_floor and "initial_state" in end["remaining"] and "initial_state" not in end["effects"]
+            and blocks["verdict"] == "explained" and "initial_state" in blocks["effects"])
+
+
+def choose_split(end, blocks, say):
+    """The diagnosis of the two splits to report: the blocks' when they name a
+    drift or gain drift (which the end's did not) and leave fewer noise
+    floors, or when the end's held-out part was at the floor with only the
+    record's start left and the blocks name an initial state and explain the
+    record (:func:`start_left_to_blocks`); the end's otherwise.  The other is
+    summarised under ``other_split``, with why it was not taken or why it
+    was."""
+    left_end = end["rms_heldout"] / end["noise_floor"]
+    left_blocks = blocks["rms_heldout"] / blocks["noise_floor"]
+    named = [e for e in blocks["effects"] if e in INTERPOLATED]
+    start = start_left_to_blocks(end, blocks)
+    take = (bool(named) and left_blocks < left_end) or start
+    chosen, other = (blocks, end) if take else (end, blocks)
+    # the summary of the split not taken says what it would name, by the same rules on small later steps
+    # and the core's shape as the one reported (the choice above is made on the splits as searched)
+    quiet = lambda s: None  # noqa: E731
+    summary = pass_summary(core_shape(small_later_steps(other, quiet), quiet))
+    if start and not (named and left_blocks < left_end):
+        summary["why"] = (f"with the end held out the held-out part was at {left_end:.2f} noise floors, but a "
+                          "signature stayed at the record's start, which an end held out cannot test; with blocks "
+                          f"spread over the record an initial state is named and {left_blocks:.2f} noise floors "
+                          "are left (explained)")
+    elif take:
+        summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors and no "
+                          f"{' or '.join(INTERPOLATED)} was named; with blocks spread over the record "
+                          f"{', '.join(named)} is named and {left_blocks:.2f} noise floors are left: a time "
+                          "effect of no set shape is judged by interpolation, not by extrapolation into the end")
+    else:
+        summary["why"] = ("not taken: with blocks spread over the record "
+                          + (f"{', '.join(named)} is named but {left_blocks:.2f} noise floors are left against "
+                             f"{left_end:.2f} with the end held out" if named else
+                             f"no {' or '.join(INTERPOLATED)} is named either ({left_blocks:.2f} noise floors left)"))
+    say(("taken: " if take else "") + summary["why"])
+    chosen = dict(chosen)
+    chosen["other_split"] = summary
+    chosen["elapsed"] = end["elapsed"] + blocks["elapsed"]
+    chosen["n_evaluations"] = end["n_evaluations"] + blocks["n_evaluations"]
+    return chosen
