@@ -1,7 +1,7 @@
 """Small tools the later sets (HOLDOUT31 on) share for drawing their records: a time grid within
 the sample budget, whether a programme fits it, a drive driven about evenly to both sides, a
 scaling to an amplitude, a root for a parameter, and (HOLDOUT40 on) drives from knot programmes
-and a core's stroke. Written once here (they had been copied into
+(:func:`knots_at`, :class:`Programme`) and a core's stroke. Written once here (they had been copied into
 every set's ``cases_holdoutNN.py``); each set binds them under its old private names, so the
 records are the same to the bit.
 """
@@ -73,3 +73,32 @@ def stroke(h):
     """The middle of ``h``'s range and its half range: ``(centre, half)``."""
     c = (h.max() + h.min()) / 2
     return c, np.abs(h - c).max()
+
+
+def knots_at(t, knots, move):
+    """The position on times t through knots [(time, position), ...] joined by ``move(s)`` (a
+    point-to-point move 0 ... 1 over s in 0 ... 1); the first knot's position before it, the last's
+    after."""
+    t = np.asarray(t, float)
+    T = np.array([k[0] for k in knots])
+    X = np.array([k[1] for k in knots])
+    i = np.clip(np.searchsorted(T, t, side="right") - 1, 0, len(T) - 2)
+    d = T[i + 1] - T[i]
+    s = np.where(d > 0, (t - T[i]) / np.where(d > 0, d, 1.0), 1.0)
+    x = X[i] + (X[i + 1] - X[i]) * move(s)
+    x = np.where(t <= T[0], X[0], x)
+    return np.where(t >= T[-1], X[-1], x)
+
+
+class Programme:
+    """A programme being written: knots appended as (dt after the last, position)."""
+
+    def __init__(self, x0=0.0):
+        self.t, self.kn = 0.0, [(0.0, x0)]
+
+    def to(self, dt, x):
+        self.t += dt
+        self.kn.append((self.t, float(x)))
+
+    def hold(self, dt):
+        self.to(dt, self.kn[-1][1])

@@ -11,6 +11,8 @@ import math
 
 import numpy as np
 
+from .set_tools import knots_at as _knots_at
+
 
 def cycloidal(s):
     """The cycloidal move 0 ... 1 over s in 0 ... 1 (clipped outside)."""
@@ -29,16 +31,7 @@ def trapezoid(s, a):
 def knots_eval(t, knots, kind="cyc", a=0.15):
     """The position on times t through knots [(time, position), ...] joined by cycloidal (kind "cyc") or trapezoidal
     ("trap", ramps a) moves; the first knot's position before it, the last's after."""
-    t = np.asarray(t, float)
-    T = np.array([k[0] for k in knots])
-    X = np.array([k[1] for k in knots])
-    i = np.clip(np.searchsorted(T, t, side="right") - 1, 0, len(T) - 2)
-    d = T[i + 1] - T[i]
-    s = np.where(d > 0, (t - T[i]) / np.where(d > 0, d, 1.0), 1.0)
-    shape = cycloidal(s) if kind == "cyc" else trapezoid(s, a)
-    x = X[i] + (X[i + 1] - X[i]) * shape
-    x = np.where(t <= T[0], X[0], x)
-    return np.where(t >= T[-1], X[-1], x)
+    return _knots_at(t, knots, cycloidal if kind == "cyc" else (lambda s: trapezoid(s, a)))
 
 
 def bouts_eval(t, bouts):

@@ -11,6 +11,8 @@ import math
 
 import numpy as np
 
+from .set_tools import Programme as _Prog, knots_at as _knots_at
+
 
 def harmonic(s):
     """The harmonic move 0 ... 1 over s in 0 ... 1 (clipped outside)."""
@@ -27,30 +29,7 @@ def quintic(s):
 def knots_at(t, knots, kind="quintic"):
     """The position on times t through knots [(time, position), ...] joined by quintic (kind "quintic") or harmonic
     ("harmonic") moves; the first knot's position before it, the last's after."""
-    t = np.asarray(t, float)
-    T = np.array([k[0] for k in knots])
-    X = np.array([k[1] for k in knots])
-    i = np.clip(np.searchsorted(T, t, side="right") - 1, 0, len(T) - 2)
-    d = T[i + 1] - T[i]
-    s = np.where(d > 0, (t - T[i]) / np.where(d > 0, d, 1.0), 1.0)
-    shape = quintic(s) if kind == "quintic" else harmonic(s)
-    x = X[i] + (X[i + 1] - X[i]) * shape
-    x = np.where(t <= T[0], X[0], x)
-    return np.where(t >= T[-1], X[-1], x)
-
-
-class _Prog:
-    """A programme being written: knots appended as (dt after the last, position)."""
-
-    def __init__(self, x0=0.0):
-        self.t, self.kn = 0.0, [(0.0, x0)]
-
-    def to(self, dt, x):
-        self.t += dt
-        self.kn.append((self.t, float(x)))
-
-    def hold(self, dt):
-        self.to(dt, self.kn[-1][1])
+    return _knots_at(t, knots, quintic if kind == "quintic" else harmonic)
 
 
 # ---- an oscillating desk fan (the clean case) ----

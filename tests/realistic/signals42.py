@@ -9,6 +9,8 @@ for Automatic Machines and Robots*, 2008, from memory). Nothing here imports hys
 
 import numpy as np
 
+from .set_tools import Programme as _Prog, knots_at as _knots_at
+
 
 def septic(s):
     """The zero-jerk move 0 ... 1 over s in 0 ... 1 (clipped outside)."""
@@ -20,29 +22,7 @@ def septic(s):
 def knots_at(t, knots):
     """The position on times t through knots [(time, position), ...] joined by septic moves; the first knot's position
     before it, the last's after."""
-    t = np.asarray(t, float)
-    T = np.array([k[0] for k in knots])
-    X = np.array([k[1] for k in knots])
-    i = np.clip(np.searchsorted(T, t, side="right") - 1, 0, len(T) - 2)
-    d = T[i + 1] - T[i]
-    s = np.where(d > 0, (t - T[i]) / np.where(d > 0, d, 1.0), 1.0)
-    x = X[i] + (X[i + 1] - X[i]) * septic(s)
-    x = np.where(t <= T[0], X[0], x)
-    return np.where(t >= T[-1], X[-1], x)
-
-
-class _Prog:
-    """A programme being written: knots appended as (dt after the last, position)."""
-
-    def __init__(self, x0=0.0):
-        self.t, self.kn = 0.0, [(0.0, x0)]
-
-    def to(self, dt, x):
-        self.t += dt
-        self.kn.append((self.t, float(x)))
-
-    def hold(self, dt):
-        self.to(dt, self.kn[-1][1])
+    return _knots_at(t, knots, septic)
 
 
 # ---- a tower crane's jib slewing between loads (the clean case) ----
