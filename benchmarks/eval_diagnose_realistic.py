@@ -131,6 +131,7 @@ def run_one(name, seed):
         "clean": not rec.expect_effects and rec.expect_verdict == "explained",
         "combined": len(family(rec.expect_effects)) >= 2,
         "stopped": getattr(res, "stopped", None), "error": error, "seconds": elapsed,
+        "preisach_core": getattr(res, "preisach_core", None),
         "steps": [] if res is None else [
             {"effect": st["effect"], "kind": st["evidence"]["extension"].get("kind"),
              "dropped": bool(st.get("dropped", False)), "tentative": bool(st.get("tentative", False)),

@@ -84,7 +84,7 @@ def test_an_expanding_sensor_is_not_a_saturation(plate):
     d = diagnose(t, v, y)
     assert "saturation" not in d.effects and "saturation" not in d.tentative
     js = d.to_dict()
-    assert js["schema_version"] == 24
+    assert js["schema_version"] == 25
     # the cubic output map, if the search fitted it at all, holds a falling gain
     weights = dict(zip(d.model.names, d.model.theta))
     assert weights.get("output_cubic", 0.0) <= 0.0

@@ -40,6 +40,11 @@ remains (in time, against input, against rate, at the record's start).
 A record the held-out end leaves unexplained with no drift named is
 re-judged on blocks held out between fitted stretches (a drift that turns
 cannot be extrapolated into the end; ``held_out`` of :func:`diagnose`).
+A record left unexplained is also fitted with a rate-independent core of the
+Preisach type (a KP model, :mod:`~hystcomp.diagnose.preisach_core`), judged
+the same way: when it explains the record, the report says what the
+vocabulary misses may be a core that is not PI (or a static map, which
+such a core draws too); it changes no name and no verdict.
 
 Without a time axis (``t=None``: a quasi-static point sequence such as a
 B-H loop) rate dependence, creep, drift, gain drift and delay are reported

@@ -8,8 +8,9 @@ import textwrap
 import numpy as np
 
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
+from .preisach_core import describe as describe_preisach_core
 
-SCHEMA_VERSION = 24
+SCHEMA_VERSION = 25
 
 
 def _jsonable(x):
@@ -210,6 +211,17 @@ class Diagnosis:
         finer core's; what remained was the base model's grid of
         thresholds, not an effect).  None when the final model was within
         the bound or the thresholds were given.
+    preisach_core : dict or None
+        On a record left unexplained: a rate-independent core of the
+        Preisach type (a KP model, :func:`hystcomp.identify.fit_kp`) fitted
+        to the same part and judged on the held-out part
+        (:mod:`hystcomp.diagnose.preisach_core`): ``model``, ``cells``,
+        ``weights``, ``rms_heldout``, ``noise_floors``,
+        ``signatures_present``, ``explains`` (within the explained bound with
+        no signature present: what the vocabulary misses may be a core that
+        is not PI, or a static map that such a core draws too) and
+        ``seconds``.  It changes no name and no verdict.  None on a record
+        explained.
     held_out_beyond_fitted_range : float
         How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0: inside it).  Above 0.05 the report
@@ -291,6 +303,7 @@ class Diagnosis:
     core_shape = None
     other_split = None
     finer_core = None
+    preisach_core = None
     held_out_blocks = ()
     rest = None
 
@@ -337,7 +350,7 @@ class Diagnosis:
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 24; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 25; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -362,7 +375,7 @@ class Diagnosis:
         ``asymmetry_antisymmetric_share`` and ``input_balance``, 23
         ``core_shape`` and the steps' ``core_shape``, 24 ``creep_or_trend``
         in the ``evidence`` of a step where creep was taken over a drift on a
-        near tie held out).
+        near tie held out, 25 ``preisach_core``).
 
         Returns
         -------
@@ -385,6 +398,7 @@ class Diagnosis:
             "output_span": self.output_span,
             "validation": list(self.validation), "held_out_blocks": [list(b) for b in self.held_out_blocks],
             "other_split": self.other_split, "rest": self.rest, "finer_core": self.finer_core,
+            "preisach_core": self.preisach_core,
             "held_out_beyond_fitted_range": self.held_out_beyond_fitted_range,
             "held_out_moved": self.held_out_moved, "held_out_moved_faster": self.held_out_moved_faster,
             "held_out_input_share": self.held_out_input_share,
@@ -483,6 +497,9 @@ class Diagnosis:
                                 if fc["signatures_present"] else "")))
         for k, why in self.remaining.items():
             lines.append(f"  remains: {why}")
+        pc = describe_preisach_core(self.preisach_core)
+        if pc:
+            lines.append("  " + pc)
         if self.held_out_moved > 0 or self.held_out_moved_faster > 0 or len(self.held_out_blocks) > 1:
             lines.append("  " + self._rec.held_out_line())
         if self.other_split is not None:

@@ -12,6 +12,7 @@ from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, play_thresholds, rest_point, step_kind  # noqa: F401
 from .off_centre import off_centre_test
+from .preisach_core import preisach_core
 from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carried_structure, noise_floor
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
@@ -120,7 +121,7 @@ def run_search(t, v, y, effects, validation, max_effects, n_thresholds, threshol
                 f"re-judging on {N_BLOCKS} held-out blocks spread over the record")
             other = _search(*args, "blocks", workers)
             kw = choose_split(kw, other, say)
-        return core_shape(small_later_steps(kw, say), say)
+        return preisach_core(core_shape(small_later_steps(kw, say), say), say)
     finally:
         bar.close()
 

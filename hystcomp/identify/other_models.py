@@ -74,7 +74,7 @@ def _plane_solve(G, b, yy, wsum, regularization, solver):
     return theta, status
 
 
-def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
+def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress, train=None):
     import time
 
     from ..preisach import KP, Preisach
@@ -85,6 +85,15 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
     yv = as_signal(y, "y")
     if x.size != yv.size:
         raise ValueError(f"Parameter y has {yv.size} samples but v has {x.size}; expected equal lengths")
+    if train is None:
+        mask = np.ones(x.size, bool)
+    else:
+        mask = np.asarray(train)
+        if mask.dtype != bool or mask.shape != x.shape:
+            raise ValueError(f"Parameter train is an array of {mask.dtype} with shape {mask.shape} but should be "
+                             f"a boolean mask of the {x.size} samples (True: fitted)")
+        if not mask.any():
+            raise ValueError("Parameter train selects no sample; at least one sample must be fitted")
     if not (isinstance(n, (int, np.integer)) and n >= 1):
         raise ValueError(f"Parameter n is {n!r} but should be a positive integer (cells per axis)")
     if input_range is None:
@@ -109,12 +118,12 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
         A = np.empty((_BLOCK, K))
     nblocks = (x.size + _BLOCK - 1) // _BLOCK
     for bi, s0 in enumerate(range(0, x.size, _BLOCK)):
-        xs, ys = x[s0:s0 + _BLOCK], yv[s0:s0 + _BLOCK]
+        xs, ys, ms = x[s0:s0 + _BLOCK], yv[s0:s0 + _BLOCK], mask[s0:s0 + _BLOCK]
         if kind == "preisach":
             S = _ko.preisach_segments(xs, proto.v_min, proto.h, k, starts, states)
-            # rows: one per segment of constant state, weighted by its length
-            cnt = np.diff(np.append(starts[:S], xs.size)).astype(np.float64)
-            ysum = np.add.reduceat(ys, starts[:S])
+            # rows: one per segment of constant state, weighted by its fitted samples
+            cnt = np.add.reduceat(ms.astype(np.float64), starts[:S])
+            ysum = np.add.reduceat(np.where(ms, ys, 0.0), starts[:S])
             rows = np.where(cj[None, :] < states[:S][:, ci], 1.0, -1.0)
             rows = np.hstack([rows, np.ones((S, 1))])
             G += rows.T @ (rows * cnt[:, None])
@@ -122,9 +131,9 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
         else:
             Ab = A[: xs.size]
             _ko.kp_regressors(xs, proto.v_min, proto.h, z, cd, cj.astype(np.int64), Ab)
-            rows = np.hstack([Ab, np.ones((xs.size, 1))])
+            rows = np.hstack([Ab, np.ones((xs.size, 1))])[ms]
             G += rows.T @ rows
-            bvec += rows.T @ ys
+            bvec += rows.T @ ys[ms]
         if progress and nblocks > 4:
             import sys
 
@@ -132,11 +141,13 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
             sys.stderr.write(f"\r{kind} regressors [{'#' * int(30 * done):<30}] {100 * done:5.1f}%")
             if bi + 1 == nblocks:
                 sys.stderr.write("\n")
-    theta, status = _plane_solve(G, bvec, float(yv @ yv), float(x.size), regularization, solver)
+    yf = yv[mask]
+    theta, status = _plane_solve(G, bvec, float(yf @ yf), float(yf.size), regularization, solver)
     mu = np.zeros((n, n))
     mu[ci, cj] = theta[:K]
     model = cls(input_range, mu, float(theta[K]))
-    e = yv - model.simulate(x)
+    # the residual on the fitted samples (the model runs over the whole record)
+    e = (yv - model.simulate(x))[mask]
     # cells by their (row, column) in the Preisach plane; no covariance (a
     # ridge-penalised, mostly bound-constrained problem of hundreds of cells)
     names = [f"mu[{i},{j}]" for i, j in zip(ci, cj)] + ["offset"]
@@ -144,7 +155,7 @@ def _plane_fit(kind, v, y, n, input_range, regularization, solver, progress):
                       "" if status == "optimal" else f"cvxpy status {status}", names, theta[:K + 1])
 
 
-def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progress=False):
+def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progress=False, train=None):
     """Identify a :class:`~hystcomp.preisach.Preisach` model: non-negative
     cell weights and an offset by constrained least squares.
 
@@ -171,6 +182,12 @@ def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None,
         cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS).
     progress : bool
         Progress bar on stderr.
+    train : array of bool, optional
+        The samples fitted (default all).  The relays run over the whole
+        record from its first sample; only the samples marked True enter
+        the least-squares problem, so the rest can judge the fit held out
+        (as :func:`hystcomp.diagnose.diagnose` does).  The result's
+        residuals, RMSE and criteria are on those samples.
 
     Returns
     -------
@@ -186,10 +203,10 @@ def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None,
     >>> bool(res.rmse < 1e-6)
     True
     """
-    return _plane_fit("preisach", v, y, n, input_range, regularization, solver, progress)
+    return _plane_fit("preisach", v, y, n, input_range, regularization, solver, progress, train)
 
 
-def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progress=False):
+def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progress=False, train=None):
     """Identify a :class:`~hystcomp.preisach.KP` model (non-negative cell
     weights and an offset), as :func:`fit_preisach` does for the Preisach
     model; the regressors are the KP operator outputs (dense rows, built in
@@ -210,6 +227,8 @@ def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progr
         cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS).
     progress : bool
         Progress bar on stderr.
+    train : array of bool, optional
+        The samples fitted (default all), as in :func:`fit_preisach`.
 
     Returns
     -------
@@ -225,7 +244,7 @@ def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progr
     >>> bool(res.rmse < 1e-6)
     True
     """
-    return _plane_fit("kp", v, y, n, input_range, regularization, solver, progress)
+    return _plane_fit("kp", v, y, n, input_range, regularization, solver, progress, train)
 
 
 def _linear_tail(w, x, y, gain):
