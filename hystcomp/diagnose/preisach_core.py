@@ -31,7 +31,11 @@ maps beside the core; 1.55-4.8 on the other 6), and 1.02-1.61 on the clean
 records of HOLDOUT32, 35, 36, 39, 40 and 41, whose cores are not PI models
 (3.8-29 on those of HOLDOUT33, 34, 38 and 42).  That is why the check runs
 only on a record the diagnosis left unexplained, changes nothing, and why
-its line names the core's shape and static maps alike.
+its line names the core's shape and static maps alike.  Round 40 tried the
+same plane as a part added to the final model and dropped it (it brought
+7 of 32 records with an effect in time or rate within the bound); fitted
+alone, it explained 1 of the 87 such records at seed 0 left unexplained
+(round 44; docs/diagnose.md, "When the core is not PI").
 """
 
 import time
