@@ -141,3 +141,20 @@ def test_the_check_changes_no_name_and_no_verdict(monkeypatch, capstan):
     off = diagnose(rec.t, rec.v, rec.y, progress=False)
     assert off.preisach_core is None and rep.preisach_core is not None
     assert (off.verdict, off.effects, off.rms_heldout) == (rep.verdict, rep.effects, rep.rms_heldout)
+
+
+def test_the_gap_figure_shows_the_preisach_type_core_last(capstan):
+    import matplotlib.pyplot as plt
+
+    rec, rep = capstan
+    figs = rep.plots()
+    try:
+        axes = figs["gap"].axes
+        # the base PI (nothing named) and the KP core alone, its held-out RMS in the title as reported
+        assert len(axes) == 2
+        title = axes[-1].get_title()
+        assert title.startswith("a Preisach-type core alone (KP, 16 x 16 cells; evidence, not the model): explains")
+        assert f"{rep.preisach_core['noise_floors']:.2f} noise floors" in title
+    finally:
+        for f in figs.values():
+            plt.close(f)

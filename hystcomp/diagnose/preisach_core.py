@@ -76,7 +76,8 @@ def preisach_core(kw, say, cells=CELLS):
         `kw`, with ``preisach_core``: ``model`` ("KP"), ``cells``,
         ``weights``, ``rms_heldout``, ``noise_floors``,
         ``signatures_present``, ``explains`` (within the explained bound with
-        no signature present) and ``seconds``.
+        no signature present) and ``seconds``; and ``_kp_pred``, the KP
+        core's prediction (the gap figure's last panel).
     """
     kw["preisach_core"] = None
     if kw["verdict"] != "unexplained":
@@ -99,6 +100,7 @@ def preisach_core(kw, say, cells=CELLS):
            "noise_floors": round(rms / sigma, 4), "signatures_present": signs, "explains": bool(explains),
            "seconds": round(time.perf_counter() - t0, 3)}
     kw["preisach_core"] = out
+    kw["_kp_pred"] = pred
     say(f"a Preisach-type core (KP, {cells} x {cells} cells): held-out RMS {rms:.4g} ({rms / sigma:.3g} noise "
         f"floors)" + ("; it explains the record" if explains else ""))
     return kw

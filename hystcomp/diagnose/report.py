@@ -530,7 +530,8 @@ class Diagnosis:
         would squeeze the rest, and its label counts those beyond), ``loops``
         (held-out loops of the base and final model, every n-th cycle on long
         records), ``gap`` (the residual before and after each step with the
-        noise floor).
+        noise floor; on a record left unexplained, a last panel with the
+        residual of the Preisach-type core alone, :attr:`preisach_core`).
 
         Parameters
         ----------
@@ -656,6 +657,12 @@ class Diagnosis:
             labels.append(f"final: {self._final_name()} (after revision)")
         if finer is not None:
             labels.append(f"final: {self._final_name()} with {finer['plays']} plays (the finer core)")
+        pc, kp = self.preisach_core, getattr(self, "_kp_pred", None)
+        if pc is not None and kp is not None:
+            # evidence only: the rate-independent core of the Preisach type alone, not the model returned
+            preds.append(kp)
+            labels.append(f"a Preisach-type core alone (KP, {pc['cells']} x {pc['cells']} cells; evidence, not the "
+                          "model): " + ("explains the record" if pc["explains"] else "does not explain it"))
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)
