@@ -51,7 +51,7 @@ __all__ = ["CELLS", "preisach_core"]
 #: HOLDOUT42's saturation record and HOLDOUT41's clean ring at seed 0 (39,244
 #: and 36,409 samples): 16 x 16 (136 weights) left 3.12 and 1.21 true noise
 #: levels held out in 1.6 and 1.5 s, 20 x 20 (210) 3.36 and 1.19 in 4.8 and
-#: 4.4 s
+#: 4.4 s (solved by cvxpy; by BVLS, as the diagnosis solves it, 0.1-0.3 s)
 CELLS = 16
 
 
@@ -86,7 +86,10 @@ def preisach_core(kw, say, cells=CELLS):
     sigma = kw["noise_floor"]
     t0 = time.perf_counter()
     try:
-        fit = fit_kp(rec.v, rec.y, n=int(cells), input_range=(rec.vmin, rec.vmax), train=rec.train)
+        # BVLS, not cvxpy: the diagnosis runs in forked processes (diagnose_many, a user's pool), where a
+        # cvxpy solver's thread pool inherited from the parent may hang
+        fit = fit_kp(rec.v, rec.y, n=int(cells), input_range=(rec.vmin, rec.vmax), train=rec.train,
+                     solver="bvls")
     except (ValueError, RuntimeError, np.linalg.LinAlgError) as exc:
         say(f"a Preisach-type core was not fitted: {exc}")
         return kw

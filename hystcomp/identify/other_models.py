@@ -45,7 +45,14 @@ def _plane_solve(G, b, yy, wsum, regularization, solver):
     bs = b / s / (wsum * sigma)
     free = np.ones(m, bool)
     R, d = _split_gram(Gs, bs, free)
-    if m <= 300:
+    if solver == "bvls":
+        # the same problem as bounded least squares: the ridge as rows below R
+        # (SciPy's BVLS; no cvxpy, so no solver thread pool: safe in a
+        # process forked from one that has used cvxpy)
+        Ra = np.vstack([R, np.hstack([math.sqrt(regularization) * np.eye(K), np.zeros((K, 1))])])
+        da = np.concatenate([d, np.zeros(K)])
+        x, status, err = solve_weights(Ra, da, lower=np.append(np.zeros(K), -np.inf))
+    elif m <= 300:
         C = np.zeros((K, m))
         C[np.arange(K), np.arange(K)] = 1.0
         M = np.zeros((K, m))
@@ -179,7 +186,11 @@ def fit_preisach(v, y, n=20, input_range=None, regularization=1e-6, solver=None,
         excited; 1e-6 changes the training RMS by far less than the grid's
         quantisation.
     solver : str, optional
-        cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS).
+        cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS), or
+        ``"bvls"``: the same problem by SciPy's bounded-variable least
+        squares, without cvxpy (what :func:`hystcomp.diagnose.diagnose` uses:
+        a cvxpy solver's thread pool may hang a process forked from one that
+        has used it).
     progress : bool
         Progress bar on stderr.
     train : array of bool, optional
@@ -224,7 +235,8 @@ def fit_kp(v, y, n=20, input_range=None, regularization=1e-6, solver=None, progr
     regularization : float
         Ridge weight in scaled units, as in :func:`fit_preisach`.
     solver : str, optional
-        cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS).
+        cvxpy solver (default: the first of CLARABEL, OSQP, SCS, ECOS), or
+        ``"bvls"`` (no cvxpy), as in :func:`fit_preisach`.
     progress : bool
         Progress bar on stderr.
     train : array of bool, optional
