@@ -105,9 +105,10 @@ def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows
     # named on it at seed 0 until naming on an unexplained record asked for 40 %
     # (HOLDOUT32's Dahl friction); HOLDOUT33's Stoner-Wohlfarth armature leaves 5.6-8.3 floors with
     # its parts tentative; HOLDOUT35's capstan cable 1.32 floors at seed 0 with nothing paying; HOLDOUT39's
-    # critical-state rod 1.33 floors at seed 0 with nothing paying
+    # critical-state rod 1.33 floors at seed 0 with nothing paying; HOLDOUT42's shape-memory wire 3.60 floors at
+    # seed 0 with its asymmetry tentative
     not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
-    assert len(not_pi) == len(NOT_PI_CLEAN) == 4
+    assert len(not_pi) == len(NOT_PI_CLEAN) == 5
     assert all(not r["effects"] and r["verdict"] == "unexplained" for r in not_pi), _table(not_pi)
 
 
