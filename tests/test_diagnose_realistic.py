@@ -100,7 +100,9 @@ def test_right_verdict_no_worse_than_measured(rows):
 #: that transform at absolute temperatures, nearly equal widths, the spring's stress feeding back on every segment:
 #: its loops' sides are sigmoids, 3.5-3.8 sigma from a 12-play PI fit), fresh in round 44: unexplained with nothing
 #: named at 3.60 and 3.17 noise floors at seeds 0 and 1; at seed 2 a saturation and an asymmetry named (`unexplained`
-#: at 2.25), counted wrong
+#: at 2.25), counted wrong. Since round 45 a Preisach-type (KP) core is taken on a record left unexplained with
+#: nothing named when it explains it: HOLDOUT35's cable at seeds 0 and 1 (1.01 and 1.23 noise floors) and
+#: HOLDOUT39's rod at seed 0 (1.10) are `explained`, nothing named, counted right
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
@@ -126,7 +128,8 @@ SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
 
 def _named_on_clean(rows):
     """The clean runs that name an effect or are not `explained`, beside the known exceptions:
-    NOT_PI_CLEAN left unexplained with nothing named, SATURATING_CLEAN with a saturation at most."""
+    NOT_PI_CLEAN with nothing named (left unexplained, or explained by a Preisach-type core),
+    SATURATING_CLEAN with a saturation at most."""
     return [r for r in rows if r["clean"] and (
         (r["effects"] and not (r["case"] in SATURATING_CLEAN and set(r["effects"]) <= {"saturation"}))
         or (r["verdict"] != "explained" and r["case"] not in NOT_PI_CLEAN + SATURATING_CLEAN))]
@@ -140,8 +143,8 @@ def test_no_effect_named_on_clean_records(rows):
     assert len(clean) >= 5 and any(r["case"] == "holdout6_clean_triangles_offset_500hz" for r in clean)
     # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature, HOLDOUT35's capstan cable and
     # HOLDOUT39's critical-state rod and HOLDOUT42's shape-memory wire are not PI models:
-    # nothing may be named on them, but they are left unexplained (tests/test_diagnose_realistic_sample.py,
-    # NOT_PI_CLEAN); HOLDOUT34's stiffening pads, HOLDOUT36's saturating iron and HOLDOUT40's switching PZT may
+    # nothing may be named on them, but they may be left unexplained (tests/test_diagnose_realistic_sample.py,
+    # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads, HOLDOUT36's saturating iron and HOLDOUT40's switching PZT may
     # get a saturation and nothing else (SATURATING_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)

@@ -100,7 +100,7 @@ def test_no_effect_named_on_any_clean_record(rows):
     assert not named, _table(named)
 
 
-def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows):
+def test_a_clean_core_that_is_not_pi_gets_nothing_named(rows):
     # round 34: a saturation (a cubic output map, 22 % of the base misfit above the noise) was
     # named on it at seed 0 until naming on an unexplained record asked for 40 %
     # (HOLDOUT32's Dahl friction); HOLDOUT33's Stoner-Wohlfarth armature leaves 5.6-8.3 floors with
@@ -109,7 +109,14 @@ def test_a_clean_core_that_is_not_pi_is_left_unexplained_with_nothing_named(rows
     # seed 0 with its asymmetry tentative
     not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
     assert len(not_pi) == len(NOT_PI_CLEAN) == 5
-    assert all(not r["effects"] and r["verdict"] == "unexplained" for r in not_pi), _table(not_pi)
+    assert all(not r["effects"] for r in not_pi), _table(not_pi)
+    # since round 45 a Preisach-type core is taken where it explains a record left unexplained with nothing
+    # named: HOLDOUT35's cable (1.01 noise floors) and HOLDOUT39's rod (1.10) at seed 0, within the explained
+    # bound (about 1.45) by a margin no BLAS moves; the other three stay unexplained (the KP core 1.66, 3.88 and 3.42)
+    taken = {r["case"].split("_")[0] for r in not_pi if (r["preisach_core"] or {}).get("taken")}
+    assert taken == {"holdout35", "holdout39"}, _table(not_pi)
+    assert all(r["verdict"] == ("explained" if r["case"].split("_")[0] in taken else "unexplained")
+               for r in not_pi), _table(not_pi)
 
 
 def test_explained_means_within_the_noise(rows):

@@ -44,7 +44,8 @@ A record left unexplained is also fitted with a rate-independent core of the
 Preisach type (a KP model, :mod:`~hystcomp.diagnose.preisach_core`), judged
 the same way: when it explains the record, the report says what the
 vocabulary misses may be a core that is not PI (or a static map, which
-such a core draws too); it changes no name and no verdict.
+such a core draws too); it changes no name, and when no effect was named it
+is taken: the verdict is ``"explained"`` and the model returned is that core.
 
 Without a time axis (``t=None``: a quasi-static point sequence such as a
 B-H loop) rate dependence, creep, drift, gain drift and delay are reported

@@ -10,7 +10,7 @@ import numpy as np
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
 from .preisach_core import describe as describe_preisach_core
 
-SCHEMA_VERSION = 25
+SCHEMA_VERSION = 26
 
 
 def _jsonable(x):
@@ -217,11 +217,18 @@ class Diagnosis:
         to the same part and judged on the held-out part
         (:mod:`hystcomp.diagnose.preisach_core`): ``model``, ``cells``,
         ``weights``, ``rms_heldout``, ``noise_floors``,
-        ``signatures_present``, ``explains`` (within the explained bound with
-        no signature present: what the vocabulary misses may be a core that
-        is not PI, or a static map that such a core draws too) and
-        ``seconds``.  It changes no name and no verdict.  None on a record
-        explained.
+        ``signatures_present``, ``lag1_autocorrelation``, ``explains``
+        (within the explained bound with no signature present and a residual
+        not correlated from sample to sample, as the final model is judged:
+        what the vocabulary misses may be a core that is not PI, or a static
+        map that such a core draws too), ``taken`` and ``seconds``.  It
+        changes no name.  ``taken`` when it explains the record and no
+        effect was named (:attr:`tentative` is then emptied, and what the PI
+        model left moves from :attr:`remaining` to its ``pi_remaining``):
+        the verdict is ``explained`` and :attr:`model` is the KP core
+        (:class:`~hystcomp.diagnose.preisach_core.PreisachCoreModel`; the PI
+        model of the search stays as :attr:`pi_model`).
+        None on a record the PI model and its effects explained.
     held_out_beyond_fitted_range : float
         How far the held-out input leaves the fitted part's input range, in
         fractions of the input span (0: inside it).  Above 0.05 the report
@@ -274,9 +281,14 @@ class Diagnosis:
         as fast the end's input moved as the rest's (the 99th percentiles of
         the rate; above 2 the end was moved for its rate, the analogue of
         the input range for rate effects).
-    model : PartsModel
-        The final model, built from the same parts as the fit;
+    model : PartsModel or PreisachCoreModel
+        The final model, built from the same parts as the fit (or the KP
+        core, when :attr:`preisach_core` was taken);
         ``model.simulate(v)`` reproduces :attr:`rms_heldout`.
+    pi_model : PartsModel or None
+        When :attr:`preisach_core` was taken: the search's final PI model
+        (with any extensions it kept tentative), which :attr:`model`
+        replaced; None otherwise.
     rms_heldout : float
         Held-out RMS of :attr:`model` (= :attr:`rms_after`).
     rms_before : float
@@ -304,6 +316,7 @@ class Diagnosis:
     other_split = None
     finer_core = None
     preisach_core = None
+    pi_model = None
     held_out_blocks = ()
     rest = None
 
@@ -317,7 +330,11 @@ class Diagnosis:
 
     def _core_name(self):
         """The core's name: "PI", or "PI (point-symmetric envelopes)" when
-        asymmetric envelopes were read as its shape (:attr:`core_shape`)."""
+        asymmetric envelopes were read as its shape (:attr:`core_shape`), or
+        the KP core's when the Preisach-type core was taken
+        (:attr:`preisach_core`)."""
+        if (self.preisach_core or {}).get("taken"):
+            return f"KP core ({self.preisach_core['cells']} x {self.preisach_core['cells']} cells, Preisach type)"
         return "PI" + (" (point-symmetric envelopes)" if self.core_shape else "")
 
     def _final_name(self):
@@ -350,7 +367,7 @@ class Diagnosis:
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 25; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 26; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -375,7 +392,9 @@ class Diagnosis:
         ``asymmetry_antisymmetric_share`` and ``input_balance``, 23
         ``core_shape`` and the steps' ``core_shape``, 24 ``creep_or_trend``
         in the ``evidence`` of a step where creep was taken over a drift on a
-        near tie held out, 25 ``preisach_core``).
+        near tie held out, 25 ``preisach_core``, 26 its ``taken``,
+        ``lag1_autocorrelation`` and ``pi_remaining``; when taken, ``model``
+        describes the KP core).
 
         Returns
         -------
@@ -500,6 +519,8 @@ class Diagnosis:
         pc = describe_preisach_core(self.preisach_core)
         if pc:
             lines.append("  " + pc)
+            for k, why in (self.preisach_core.get("pi_remaining") or {}).items():
+                lines.append(f"  with the PI core, remained: {why}")
         if self.held_out_moved > 0 or self.held_out_moved_faster > 0 or len(self.held_out_blocks) > 1:
             lines.append("  " + self._rec.held_out_line())
         if self.other_split is not None:
@@ -659,10 +680,14 @@ class Diagnosis:
             labels.append(f"final: {self._final_name()} with {finer['plays']} plays (the finer core)")
         pc, kp = self.preisach_core, getattr(self, "_kp_pred", None)
         if pc is not None and kp is not None:
-            # evidence only: the rate-independent core of the Preisach type alone, not the model returned
+            # the rate-independent core of the Preisach type alone: evidence, or the model when taken
             preds.append(kp)
-            labels.append(f"a Preisach-type core alone (KP, {pc['cells']} x {pc['cells']} cells; evidence, not the "
-                          "model): " + ("explains the record" if pc["explains"] else "does not explain it"))
+            if pc.get("taken"):
+                labels.append(f"final: a Preisach-type core alone (KP, {pc['cells']} x {pc['cells']} cells), taken "
+                              "as the model: it explains the record with no effect")
+            else:
+                labels.append(f"a Preisach-type core alone (KP, {pc['cells']} x {pc['cells']} cells; evidence, not "
+                              "the model): " + ("explains the record" if pc["explains"] else "does not explain it"))
         fig, ax = new_figure(len(preds), 1, size=(11, 1.9 * len(preds) + 1.2))
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)

@@ -17,7 +17,7 @@ from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carr
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
-from .signatures import one_rate_tie
+from .signatures import WHITE, lag1_autocorrelation, one_rate_tie
 from .small_steps import small_later_steps
 from .splits import INTERPOLATED, blocks_may_tell, choose_split
 from .start_or_trend import creep_or_trend, start_or_trend
@@ -64,8 +64,6 @@ NIBBLE_SHARE = 0.4
 OOV_LEFT = 6.0
 #: candidates refitted jointly with the earlier parts before the search stops
 JOINT_RETRY = 2
-#: lag-1 autocorrelation above which the final residual is not taken for white noise
-WHITE = 0.6
 
 
 def _signature_of(part, ev, rec, e, pred, sigma):
@@ -464,9 +462,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     # a residual correlated from sample to sample makes the high-frequency noise
     # floor unreliable (coloured noise or fast structure): then not "explained"
     # unless hold segments confirmed the floor
-    e = rec.y - cur.prediction
-    e = e - e.mean()
-    rho = float(e[1:] @ e[:-1] / (e @ e)) if float(e @ e) > 0 else 0.0
+    rho = lag1_autocorrelation(rec.y - cur.prediction)
     noise_info["lag1_autocorrelation"] = round(rho, 4)
     if noise_info["method"] == "high_frequency" and rho > WHITE:
         head = (f"in time: the residual is correlated from sample to sample (lag-1 autocorrelation {rho:.2f} > "

@@ -33,6 +33,8 @@ CLIP_EXCESS = 2.0
 #: a drift's trend that changes with the input level may be at most this
 #: multiple of the trend common to every level (partial RMS of each)
 LEVEL_TREND = 1.0
+#: lag-1 autocorrelation above which a final residual is not taken for white noise
+WHITE = 0.6
 
 WHERE = {"rate_dependence": "against rate", "delay": "against rate", "creep": "in time (during holds)",
          "drift": "in time", "gain_drift": "in time", "asymmetry": "against input",
@@ -215,6 +217,23 @@ def _local_frequency(rec):
     f = np.clip(f, *np.percentile(f, [2.0, 98.0]))
     sd = float(np.std(f))
     return (f - f.mean()) / sd if sd > 1e-12 * max(float(np.abs(f).max()), 1e-300) else np.zeros(rec.n)
+
+
+def lag1_autocorrelation(e):
+    """Lag-1 autocorrelation of a residual about its mean (0 for a constant
+    one): above :data:`WHITE` it is not taken for white noise.
+
+    Examples
+    --------
+    >>> round(lag1_autocorrelation(np.sin(np.linspace(0, 6, 200))), 2)
+    1.0
+    >>> lag1_autocorrelation(np.ones(5))
+    0.0
+    """
+    e = np.asarray(e, dtype=np.float64)
+    e = e - e.mean()
+    ee = float(e @ e)
+    return float(e[1:] @ e[:-1] / ee) if ee > 0 else 0.0
 
 
 def evidence(rec, e, pred, sigma, only=None):
