@@ -45,8 +45,9 @@ HOLDOUT39 was run once for the forty-first round's measurement (13 of 30 right) 
 HOLDOUT40 was run once for the forty-second round's measurement (16 of 30 right) and is part of ALL since.
 HOLDOUT41 was run once for the forty-third round's measurement (26 of 30 right) and is part of ALL since.
 HOLDOUT42 was run once for the forty-fourth round's measurement (6 of 30 right) and is part of ALL since.
+HOLDOUT43 was run once for the forty-fifth round's measurement (17 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout42|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout43|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
 """
 

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-three sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-four sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (49 clean records in all; HOLDOUT42's took 22 s in round 44's measurement). 76 runs at seed 0; 66 were right in round 44
+other set (50 clean records in all; HOLDOUT43's took 1.6 s in round 45's measurement). 77 runs at seed 0; 69 were right in round 45
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -26,7 +26,9 @@ nothing named at seed 0, see NOT_PI_CLEAN; HOLDOUT40's in round 42: a soft PZT d
 saturation at seed 0, `explained`, counted wrong, see SATURATING_CLEAN; HOLDOUT41's in round 43: a ferrite ring whose
 domain walls are pinned in random landscapes, `explained` with nothing named at seed 0; HOLDOUT42's in round 44: a
 shape-memory wire against a bias spring, not a PI core, left unexplained with nothing named at seed 0, see
-NOT_PI_CLEAN).
+NOT_PI_CLEAN; HOLDOUT43's in round 45: an electrowetting drop whose contact line is pinned, `explained` with nothing
+named at seed 0). Since round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a Preisach-type core with
+nothing named, counted right.
 """
 
 import os
@@ -62,8 +64,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 76
-    assert sum(r["clean"] for r in rows) == 49
+    assert len(rows) == 77
+    assert sum(r["clean"] for r in rows) == 50
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -75,13 +77,14 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 66/76 right in round 44 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-42, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT35's, HOLDOUT36's,
-    # HOLDOUT39's, HOLDOUT40's and HOLDOUT42's counted wrong); at least 63 (83 %):
+    # 69/77 right in round 45 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-43, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT36's, HOLDOUT40's and
+    # HOLDOUT42's counted wrong; HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core);
+    # at least 66 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 63, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 66, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
