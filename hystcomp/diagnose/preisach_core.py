@@ -37,10 +37,11 @@ test records at seed 0 (a KP core of 20 x 20 cells fitted to the first
 maps beside the core; 1.55-4.8 on the other 6), and 1.02-1.61 on the clean
 records of HOLDOUT32, 35, 36, 39, 40 and 41, whose cores are not PI models
 (3.8-29 on those of HOLDOUT33, 34, 38 and 42).  That is why the check runs
-only on a record the diagnosis left unexplained, changes nothing, and why
-its line names the core's shape and static maps alike: a record taken
-"explained" by it may hold a saturating map the labels would call an effect
-(round 45: of the 218 runs of the forty-two realistic sets left unexplained
+only on a record the diagnosis left unexplained, names nothing, is taken
+only where nothing was named, and why its line names the core's shape and
+static maps alike: a record taken "explained" by it may hold a saturating
+map the labels would call an effect (round 45: of the 218 runs of the
+forty-three realistic sets left unexplained
 with nothing named, it was taken on 6: three of two clean cores that are not
 PI, HOLDOUT35's cable and HOLDOUT39's rod, and the three of HOLDOUT35's slope
 discriminator labelled a saturation; none of the 117 out-of-vocabulary
