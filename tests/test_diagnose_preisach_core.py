@@ -165,7 +165,7 @@ def test_what_no_preisach_type_core_explains(prefix, signature):
 def test_the_taken_core_compensates_itself(capstan):
     # the README's promise, a returned model whose exact_inverse() compensates it, holds for the KP core: its
     # inverse drives it along a reference inside its reachable range to 1e-6 of the output span (the inverse
-    # solves each sample's monotone relay equation to its own tolerance; measured: a few 1e-9)
+    # solves each sample's monotone relay equation to its own tolerance; measured: 1.2e-15)
     rec, rep = capstan
     m = rep.model
     lo, hi = m.output_bounds()
