@@ -8,7 +8,7 @@ from ..identify.parts import Context
 from ..identify.parts_output import ONE_SIDED_SPAN
 from ..identify.search import Structure, VariableProjection
 
-__all__ = ["base_context", "play_thresholds", "rest_point", "step_kind", "REST_BIC", "LOADING_PLAYS"]
+__all__ = ["base_context", "misfit_share", "play_thresholds", "rest_point", "step_kind", "REST_BIC", "LOADING_PLAYS"]
 
 
 def base_context(rec, n_thresholds=20, thresholds=None):
@@ -36,6 +36,22 @@ def base_context(rec, n_thresholds=20, thresholds=None):
 #: parameters, so 10 is a training mean square lower by a factor exp(-10 / n)
 #: ("very strong" evidence on Kass and Raftery's scale, 1995)
 REST_BIC = 10.0
+
+
+def misfit_share(rms_base, rms, sigma):
+    """Share of the base model's held-out mean square above the noise that a
+    model leaving held-out RMS `rms` removes (1: all of it; 1 when the base
+    model is within the noise already).
+
+    Examples
+    --------
+    >>> misfit_share(2.0, 1.0, 1.0), misfit_share(2.0, 0.5, 1.0), misfit_share(0.9, 0.9, 1.0)
+    (1.0, 1.0, 1.0)
+    >>> round(misfit_share(3.0, 2.0, 1.0), 3)
+    0.625
+    """
+    excess0 = rms_base ** 2 - sigma ** 2
+    return 1.0 - max(rms ** 2 - sigma ** 2, 0.0) / excess0 if excess0 > 0 else 1.0
 
 
 def rest_point(rec, n_thresholds=20, thresholds=None):

@@ -58,6 +58,7 @@ import numpy as np
 
 from ..identify.other_models import fit_kp
 from ..preisach import KP
+from .base import misfit_share
 from .signatures import WHITE, evidence, lag1_autocorrelation
 
 __all__ = ["CELLS", "PreisachCoreModel", "preisach_core"]
@@ -183,12 +184,11 @@ def _take(kw, kp, rec, held, sigma):
     sgn = rec.output_sign
     model = PreisachCoreModel(kp.input_range, sgn * kp.weights, sgn * (kp.offset + rec.y_offset))
     rms = float(np.sqrt(np.mean((rec.measured - model.simulate(rec.v))[held] ** 2)))
-    excess0 = kw["rms_before"] ** 2 - sigma ** 2
     # what the PI model left stays readable (the report lists it under the KP core's line)
     kw["preisach_core"]["pi_remaining"] = dict(kw["remaining"])
     kw["pi_model"] = kw["model"]
     kw.update(verdict="explained", model=model, rms_after=rms, rms_heldout=rms, remaining={},
-              misfit_share_explained=1.0 - max(rms ** 2 - sigma ** 2, 0.0) / excess0 if excess0 > 0 else 1.0,
+              misfit_share_explained=misfit_share(kw["rms_before"], rms, sigma),
               _final_pred=kw["_kp_pred"])
     kw["stopped"] += ("; a rate-independent core of the Preisach type (KP) explains the record with no effect: "
                       "taken as the model")

@@ -10,7 +10,7 @@ from ..identify.parts_output import one_sided
 from ..identify.parallel_fits import optimise_all
 from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
-from .base import REST_BIC, base_context, play_thresholds, rest_point, step_kind  # noqa: F401
+from .base import REST_BIC, base_context, misfit_share, play_thresholds, rest_point, step_kind  # noqa: F401
 from .off_centre import off_centre_test
 from .preisach_core import preisach_core
 from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carried_structure, noise_floor
@@ -490,8 +490,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     # at a misfit of another kind (a core that is not PI): they are reported as
     # tentative, not named
     tentative = []
-    excess0 = rms0 ** 2 - sigma ** 2
-    share = 1.0 - max(rms_final ** 2 - sigma ** 2, 0.0) / excess0 if excess0 > 0 else 1.0
+    share = misfit_share(rms0, rms_final, sigma)
     # the floors left count only on a floor the record's holds confirm or
     # that was measured on a time axis: without one the high-frequency
     # estimate can be far below a smooth record's scatter (B-H loops of 129
