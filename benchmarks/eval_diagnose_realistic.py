@@ -49,6 +49,12 @@ HOLDOUT43 was run once for the forty-fifth round's measurement (17 of 30 right) 
 
 Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout43|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--jobs 2]
+     python benchmarks/eval_diagnose_realistic.py --summary OUT     (the figures of a saved run, again)
+
+After the figures it prints where the wrong runs are: how many named the right effects with the
+wrong verdict, missed an expected effect, named another beside the expected ones, or named
+another instead (effects compared by family), with the families most often missed and named
+beside or instead, and how many of each kind are right up to a reported near tie.
 """
 
 import argparse
@@ -57,6 +63,7 @@ import json
 import os
 import sys
 import time
+from collections import Counter
 from concurrent.futures import ProcessPoolExecutor
 
 
@@ -149,6 +156,118 @@ def _fmt(x, d=2):
     return "   -  " if x is None else f"{x:6.{d}f}"
 
 
+#: the kinds of wrong run :func:`breakdown` counts, in its order
+WRONG_KINDS = {
+    "verdict": "the right effects named, the wrong verdict",
+    "missed": "an expected effect missed, nothing else named",
+    "extra": "every expected effect named, and another beside them",
+    "confused": "an expected effect missed and another named instead",
+    "crash": "the diagnosis raised an error",
+}
+
+
+def wrong_kind(row):
+    """The kind of a wrong run (a key of :data:`WRONG_KINDS`), compared by effect families;
+    None for a right run."""
+    if row["right"]:
+        return None
+    if row["error"] is not None:
+        return "crash"
+    expected, named = family(row["expected"]), family(row["effects"])
+    if expected == named:
+        return "verdict"
+    if named < expected:
+        return "missed"
+    if expected < named:
+        return "extra"
+    return "confused"
+
+
+def breakdown(rows, most=8):
+    """Where the wrong runs of an evaluation are.
+
+    Returns a dict: ``n`` (runs), ``wrong`` (wrong runs), ``kinds`` (for each key of
+    :data:`WRONG_KINDS` with any run: its ``count``, how many of them are right up to a
+    reported near tie, ``tie``, and how many the diagnosis called ``unexplained``: it said
+    that something is left that it did not name), ``missed`` and ``extra`` (the effect families most often
+    missed / named beside or instead of the expected ones, over the wrong runs: a list of
+    ``(family, runs)``, at most `most`), and ``confusions`` (the commonest ``(missed,
+    named instead)`` pairs of the ``confused`` runs, families joined by "+").
+
+    Examples
+    --------
+    >>> rows = [dict(right=True, error=None, expected=["creep"], effects=["creep"], right_or_tie=True,
+    ...              verdict="explained"),
+    ...         dict(right=False, error=None, expected=["delay"], effects=["rate_dependence"],
+    ...              right_or_tie=True, verdict="explained"),
+    ...         dict(right=False, error=None, expected=["drift"], effects=[], right_or_tie=False,
+    ...              verdict="unexplained")]
+    >>> b = breakdown(rows)
+    >>> b["wrong"], b["kinds"]["confused"], b["kinds"]["missed"]["unexplained"]
+    (2, {'count': 1, 'tie': 1, 'unexplained': 0}, 1)
+    >>> b["confusions"]
+    [(('delay', 'rate_dependence'), 1)]
+    """
+    wrong = [r for r in rows if not r["right"]]
+    kinds, missed, extra, confusions = {}, Counter(), Counter(), Counter()
+    for r in wrong:
+        k = wrong_kind(r)
+        entry = kinds.setdefault(k, {"count": 0, "tie": 0, "unexplained": 0})
+        entry["count"] += 1
+        entry["tie"] += bool(r.get("right_or_tie"))
+        entry["unexplained"] += r.get("verdict") == "unexplained"
+        if k == "crash":
+            continue
+        expected, named = family(r["expected"]), family(r["effects"])
+        missed.update(expected - named)
+        extra.update(named - expected)
+        if k == "confused":
+            confusions["+".join(sorted(expected - named)), "+".join(sorted(named - expected))] += 1
+    order = {k: kinds[k] for k in WRONG_KINDS if k in kinds}
+    return {"n": len(rows), "wrong": len(wrong), "kinds": order, "missed": missed.most_common(most),
+            "extra": extra.most_common(most), "confusions": confusions.most_common(most)}
+
+
+def print_breakdown(b):
+    """Print :func:`breakdown`'s dict `b` as a few lines of text."""
+    if not b["wrong"]:
+        print("wrong runs: none")
+        return
+    print(f"\nwrong runs: {b['wrong']}/{b['n']}, by kind (effects compared by family; 'tie': right up to a "
+          "reported near tie; 'unexplained': the verdict says something is left):")
+    for k, x in b["kinds"].items():
+        print(f"  {x['count']:5d}  {WRONG_KINDS[k]} ({x['tie']} tie, {x['unexplained']} unexplained)")
+    fmt = lambda pairs: ", ".join(f"{f} {c}" for f, c in pairs) or "none"  # noqa: E731
+    print(f"  missed most often: {fmt(b['missed'])}")
+    print(f"  named beside or instead most often: {fmt(b['extra'])}")
+    print("  confused most often (missed -> named instead): "
+          + (", ".join(f"{m} -> {n} {c}" for (m, n), c in b["confusions"]) or "none"))
+
+
+def summarise(rows, total=None):
+    """Print the run's figures against the issue's targets, then where the wrong runs are
+    (:func:`breakdown`). `total`: the run's wall time in seconds (None: not printed)."""
+    n = len(rows)
+    right = sum(r["right"] for r in rows)
+    clean = [r for r in rows if r["clean"]]
+    false_alarms = sum(bool(r["effects"]) for r in clean)
+    comb = [r for r in rows if r["combined"]]
+    comb_both = sum(family(r["expected"]) <= family(r["effects"]) for r in comb)
+    over = sum(r["explained_over_limit"] for r in rows)
+    crashes = sum(r["error"] is not None for r in rows)
+    print(f"\nright verdict: {right}/{n} ({100 * right / max(n, 1):.0f} %; target >= 90 %)")
+    tie = sum(r["right_or_tie"] for r in rows)
+    amb = sum(bool(r["ambiguous"]) for r in rows)
+    print(f"right up to a reported near tie: {tie}/{n} ({100 * tie / max(n, 1):.0f} %); runs with a near tie "
+          f"reported: {amb}, of them right as named: {sum(bool(r['ambiguous']) and r['right'] for r in rows)}")
+    print(f"effects named on clean records: {false_alarms}/{len(clean)} runs (target 0)")
+    print(f"combined cases with both effects named: {comb_both}/{len(comb)} (target all)")
+    print(f"'explained' verdicts above {EXPLAINED_LIMIT}x the true noise: {over} (target 0)")
+    timing = "" if total is None else f"; total {total:.0f} s, {total / max(n, 1):.1f} s per record"
+    print(f"crashes: {crashes}{timing}")
+    print_breakdown(breakdown(rows))
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--set", choices=[*SETS, "all"], default="tuning")
@@ -156,7 +275,19 @@ def main(argv=None):
     p.add_argument("--cases", nargs="*", default=None)
     p.add_argument("--json", default=None)
     p.add_argument("--jobs", type=int, default=1)
+    p.add_argument("--summary", metavar="JSON", default=None,
+                   help="print the figures and the breakdown of wrong runs of an earlier run's --json file, "
+                        "without running")
     a = p.parse_args(argv)
+    if a.summary:
+        try:
+            with open(a.summary) as fh:
+                saved = json.load(fh)
+            rows = saved["rows"]
+        except (OSError, ValueError, KeyError, TypeError) as exc:
+            p.error(f"--summary {a.summary!r}: not a --json file of this script ({exc})")
+        summarise(rows, saved.get("seconds"))
+        return 0
     pool = {**SETS, "all": ALL}[a.set]
     names = a.cases or list(pool)
     known = KNOWN
@@ -186,26 +317,10 @@ def main(argv=None):
         print(f"{r['case'][:38]:38s} {r['seed']:2d} {exp[:28]:28s} {','.join(r['effects'])[:32] or '-':32s} "
               f"{r['verdict'][:11]:11s} {_fmt(ratio_floor):>9s} {_fmt(ratio_true):>8s} {flag:4s} "
               f"{r['seconds']:5.1f}s" + (f"  {r['error']}" if r["error"] else ""))
-    n = len(rows)
-    right = sum(r["right"] for r in rows)
-    clean = [r for r in rows if r["clean"]]
-    false_alarms = sum(bool(r["effects"]) for r in clean)
-    comb = [r for r in rows if r["combined"]]
-    comb_both = sum(family(r["expected"]) <= family(r["effects"]) for r in comb)
-    over = sum(r["explained_over_limit"] for r in rows)
-    crashes = sum(r["error"] is not None for r in rows)
-    print(f"\nright verdict: {right}/{n} ({100 * right / max(n, 1):.0f} %; target >= 90 %)")
-    tie = sum(r["right_or_tie"] for r in rows)
-    amb = sum(bool(r["ambiguous"]) for r in rows)
-    print(f"right up to a reported near tie: {tie}/{n} ({100 * tie / max(n, 1):.0f} %); runs with a near tie "
-          f"reported: {amb}, of them right as named: {sum(bool(r['ambiguous']) and r['right'] for r in rows)}")
-    print(f"effects named on clean records: {false_alarms}/{len(clean)} runs (target 0)")
-    print(f"combined cases with both effects named: {comb_both}/{len(comb)} (target all)")
-    print(f"'explained' verdicts above {EXPLAINED_LIMIT}x the true noise: {over} (target 0)")
-    print(f"crashes: {crashes}; total {total:.0f} s, {total / max(n, 1):.1f} s per record")
+    summarise(rows, total)
     if a.json:
         with open(a.json, "w") as fh:
-            json.dump({"rows": rows, "right": right, "n": n, "seconds": total}, fh, indent=1)
+            json.dump({"rows": rows, "right": sum(r["right"] for r in rows), "n": len(rows), "seconds": total}, fh, indent=1)
     return 0
 
 

@@ -1,0 +1,88 @@
+"""The realistic evaluation's breakdown of wrong runs (``benchmarks/eval_diagnose_realistic.py``:
+``breakdown``, ``--summary``), on hand-made rows whose kinds are known."""
+
+import json
+import os
+import sys
+
+import pytest
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+sys.path.insert(0, os.path.join(HERE, "..", "benchmarks"))
+
+from eval_diagnose_realistic import WRONG_KINDS, breakdown, main, wrong_kind  # noqa: E402
+
+
+def _row(expected, effects, right, verdict="explained", tie=None, error=None, **kw):
+    row = {"case": "c", "seed": 0, "expected": expected, "effects": effects, "right": right,
+           "right_or_tie": right if tie is None else tie, "verdict": verdict, "error": error,
+           "expect_verdict": "either", "ambiguous": {}, "explained_over_limit": False,
+           "clean": not expected, "combined": len(expected) >= 2}
+    row.update(kw)
+    return row
+
+
+ROWS = [
+    _row(["creep"], ["creep"], True),
+    _row(["creep"], ["creep"], False, verdict="unexplained"),                       # verdict
+    _row(["drift"], [], False, verdict="unexplained"),                               # missed
+    _row(["asymmetry", "creep"], ["creep"], False),                                  # missed, silent
+    _row(["creep"], ["creep", "asymmetry"], False, verdict="unexplained"),           # extra
+    _row([], ["saturation"], False),                                                 # extra (clean)
+    _row(["delay"], ["rate_dependence"], False, tie=True),                           # confused, a tie
+    _row(["rate_dependence"], ["delay"], False, tie=True),                           # confused, a tie
+    _row(["delay"], ["rate_dependence", "asymmetry"], False, verdict="unexplained"),  # confused
+    _row(["delay"], [], False, verdict="crash", error="ValueError: x"),              # crash
+    # a gain drift is a drift by family: right by family, here wrongly marked, is a verdict error
+    _row(["drift"], ["gain_drift"], False, verdict="unexplained"),
+]
+
+
+def test_each_wrong_run_gets_one_kind():
+    kinds = [wrong_kind(r) for r in ROWS]
+    assert kinds == [None, "verdict", "missed", "missed", "extra", "extra", "confused", "confused", "confused",
+                     "crash", "verdict"]
+    assert set(kinds) - {None} == set(WRONG_KINDS)
+
+
+def test_breakdown_counts_kinds_ties_and_families():
+    b = breakdown(ROWS)
+    assert b["n"] == 11 and b["wrong"] == 10
+    assert list(b["kinds"]) == list(WRONG_KINDS)          # in the documented order
+    assert b["kinds"]["verdict"] == {"count": 2, "tie": 0, "unexplained": 2}
+    assert b["kinds"]["missed"] == {"count": 2, "tie": 0, "unexplained": 1}
+    assert b["kinds"]["extra"] == {"count": 2, "tie": 0, "unexplained": 1}
+    assert b["kinds"]["confused"] == {"count": 3, "tie": 2, "unexplained": 1}
+    assert b["kinds"]["crash"]["count"] == 1
+    # families missed: delay 2 (the crash is not counted), rate 1, drift 1, asymmetry 1
+    assert dict(b["missed"]) == {"delay": 2, "rate_dependence": 1, "drift": 1, "asymmetry": 1}
+    assert dict(b["extra"]) == {"asymmetry": 2, "saturation": 1, "rate_dependence": 2, "delay": 1}
+    assert dict(b["confusions"]) == {("delay", "rate_dependence"): 1, ("rate_dependence", "delay"): 1,
+                                     ("delay", "asymmetry+rate_dependence"): 1}
+    assert sum(x["count"] for x in b["kinds"].values()) == b["wrong"]
+
+
+def test_breakdown_of_right_runs_only():
+    b = breakdown(ROWS[:1])
+    assert b["wrong"] == 0 and b["kinds"] == {} and b["missed"] == []
+
+
+def test_summary_reprints_a_saved_run(tmp_path, capsys):
+    path = tmp_path / "run.json"
+    path.write_text(json.dumps({"rows": ROWS, "right": 1, "n": len(ROWS), "seconds": 12.0}))
+    assert main(["--summary", str(path)]) == 0
+    out = capsys.readouterr().out
+    assert "right verdict: 1/11" in out and "crashes: 1; total 12 s" in out
+    assert "wrong runs: 10/11" in out
+    assert "3  an expected effect missed and another named instead (2 tie, 1 unexplained)" in out
+    assert "delay -> rate_dependence 1" in out
+
+
+def test_summary_of_a_bad_file_is_one_line_and_exit_2(tmp_path, capsys):
+    path = tmp_path / "bad.json"
+    path.write_text("{not json")
+    with pytest.raises(SystemExit) as exc:
+        main(["--summary", str(path)])
+    assert exc.value.code == 2
+    err = capsys.readouterr().err
+    assert f"--summary '{path}': not a --json file of this script" in err
