@@ -231,7 +231,7 @@ def breakdown(rows, most=8):
 def print_breakdown(b):
     """Print :func:`breakdown`'s dict `b` as a few lines of text."""
     if not b["wrong"]:
-        print("wrong runs: none")
+        print("\nwrong runs: none")
         return
     print(f"\nwrong runs: {b['wrong']}/{b['n']}, by kind (effects compared by family; 'tie': right up to a "
           "reported near tie; 'unexplained': the verdict says something is left):")
