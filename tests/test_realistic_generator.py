@@ -383,6 +383,19 @@ def _assert_set_layout(H, prefix, first, rec, monitored, others_carry_drive=Fals
     assert len({f for r in singles for f in family(r.expect_effects)}) == 7
 
 
+def _assert_drives_start_at_zero(H, prefix, rec, skip=()):
+    """Every record of the set `H` but the cases in `skip` (short names) starts its drive at 0 (the
+    clean drive where a noisy monitor is recorded, ``extra["drive"]``; 1e-9), at seeds 0 ... 2:
+    HOLDOUT26 and later start from rest at 0 V. `rec(short_name, seed)` gives a record."""
+    for name in H:
+        short = name[len(prefix):]
+        if short in skip:
+            continue
+        for s in range(3):
+            r = rec(short, s)
+            assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9), (name, s)
+
+
 def test_holdout8_was_measured_joined_all_and_is_well_formed():
     # written after HOLDOUT7 was measured, measured once in round 8 (18/30), in ALL since
     _assert_measured_set(HOLDOUT8, "holdout8_", {

@@ -28,8 +28,8 @@ from scipy.signal import bessel, lsim
 from realistic import HOLDOUT26, family
 from realistic import mechanisms26 as m26
 from realistic import signals26 as s26
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates, _lag_samples,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _lag_samples, _linear_misfit, _rms)
 
 pytestmark = pytest.mark.slow
 
@@ -76,11 +76,7 @@ def test_holdout26_is_well_formed_and_in_all():
     # rates 205 Hz ... 1.985 kHz, the spans; all ten rates distinct, each name ending with it
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
     # every record but the initial-state case's starts at 0 V, where a core at rest at its first input is virgin
-    for name in H:
-        if name != P + INIT:
-            for s in range(3):
-                r = _rec(name[len(P):], s)
-                assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec, skip={INIT})
 
 
 # ---- clean: a Segalman-Iwan joint under Lorenz's 1996 model ----

@@ -26,8 +26,8 @@ from scipy.signal import firwin, group_delay
 from realistic import HOLDOUT27, family
 from realistic import mechanisms27 as m27
 from realistic import signals27 as s27
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 
 pytestmark = pytest.mark.slow
 
@@ -73,11 +73,7 @@ def test_holdout27_is_well_formed_and_in_all():
     # rates 218 Hz ... 1.805 kHz, the spans; all ten rates distinct, each name ending with it
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
     # every record but the initial-state case's starts at 0 V, where the core is virgin
-    for name in H:
-        if name != P + INIT:
-            for s in range(3):
-                r = _rec(name[len(P):], s)
-                assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec, skip={INIT})
 
 
 # ---- clean: a Masing core under a swinging spring ----

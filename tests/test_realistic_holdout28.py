@@ -26,8 +26,8 @@ from scipy.signal import freqs
 from realistic import HOLDOUT28, family
 from realistic import mechanisms28 as m28
 from realistic import signals28 as s28
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 
 pytestmark = pytest.mark.slow
 
@@ -90,11 +90,7 @@ def test_holdout28_is_well_formed_and_in_all():
     # rates 238 Hz ... 1.745 kHz, the spans; all ten rates distinct, each name ending with it
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
     # every record but the initial-state case's starts at 0 V, where the core is virgin
-    for name in H:
-        if name != P + INIT:
-            for s in range(3):
-                r = _rec(name[len(P):], s)
-                assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec, skip={INIT})
 
 
 # ---- clean: Rayleigh's law under Lagrange's top ----

@@ -22,8 +22,8 @@ from scipy.special import exp1
 from realistic import HOLDOUT30, family
 from realistic import mechanisms30 as m30
 from realistic import signals30 as s30
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 
 pytestmark = pytest.mark.slow
 
@@ -80,11 +80,7 @@ def test_holdout30_is_well_formed_and_in_all():
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    for name in H:
-        if name != P + INIT:
-            for s in range(3):
-                r = _rec(name[len(P):], s)
-                assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec, skip={INIT})
 
 
 # ---- clean: Kondner's sand bedding under a honeybee's waggle dance ----

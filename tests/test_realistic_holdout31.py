@@ -21,8 +21,8 @@ from scipy.optimize import isotonic_regression, nnls
 from realistic import HOLDOUT31, family
 from realistic import mechanisms31 as m31
 from realistic import signals31 as s31
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import play_matrix as _play_matrix
 
 pytestmark = pytest.mark.slow
@@ -80,10 +80,7 @@ def test_holdout31_is_well_formed_and_in_all():
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    for name in H:
-        for s in range(3):
-            r = _rec(name[len(P):], s)
-            assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec)
 
 
 # ---- clean: a Richard-Abbott strap under a dinghy's tiller ----

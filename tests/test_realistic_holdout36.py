@@ -23,8 +23,8 @@ from realistic import HOLDOUT36, family
 from realistic import cases_holdout36 as c36
 from realistic import mechanisms36 as m36
 from realistic import signals36 as s36
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
 pytestmark = pytest.mark.slow
@@ -138,10 +138,7 @@ def test_holdout36_is_well_formed_and_in_all():
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    for name in H:
-        for s in range(3):
-            r = _rec(name[len(P):], s)
-            assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec)
 
 
 # ---- clean: a servo valve's torque motor (its iron a random-field Ising model), under the EEG of stage-2 sleep ----

@@ -34,8 +34,8 @@ from realistic import HOLDOUT40, family
 from realistic import cases_holdout40 as c40
 from realistic import mechanisms40 as m40
 from realistic import signals40 as s40
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms, seg as _seg
 
 pytestmark = pytest.mark.slow
@@ -78,10 +78,7 @@ def test_holdout40_is_well_formed_and_in_all():
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    for name in H:
-        for s in range(3):
-            r = _rec(name[len(P):], s)
-            assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec)
 
 
 # ---- the core: a PZT disc's grains switching by 180 deg, with the depolarising field ----

@@ -37,8 +37,8 @@ from realistic import HOLDOUT43, family
 from realistic import cases_holdout43 as c43
 from realistic import mechanisms43 as m43
 from realistic import signals43 as s43
-from test_realistic_generator import (_assert_measured_set, _assert_set_layout, _assert_spans_and_rates,
-                                      _linear_misfit, _rms)
+from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
+                                      _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms, seg as _seg
 
 pytestmark = pytest.mark.slow
@@ -92,10 +92,7 @@ def test_holdout43_is_well_formed_and_in_all():
     assert first[P + CLEAN].expect_verdict == "explained"
     assert first[P + OOV].expect_verdict == "unexplained"
     _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    for name in H:
-        for s in range(3):
-            r = _rec(name[len(P):], s)
-            assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9)
+    _assert_drives_start_at_zero(H, P, _rec)
 
 
 # ---- the core: an electrowetting drop's contact line pinned by its coating ----
