@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-four sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-five sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (50 clean records in all; HOLDOUT43's took 1.6 s in round 45's measurement). 77 runs at seed 0; 69 were right in round 45
+other set (51 clean records in all; HOLDOUT44's took 3.4 s in round 46's measurement). 78 runs at seed 0; 70 were right in round 46
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -27,7 +27,8 @@ saturation at seed 0, `explained`, counted wrong, see SATURATING_CLEAN; HOLDOUT4
 domain walls are pinned in random landscapes, `explained` with nothing named at seed 0; HOLDOUT42's in round 44: a
 shape-memory wire against a bias spring, not a PI core, left unexplained with nothing named at seed 0, see
 NOT_PI_CLEAN; HOLDOUT43's in round 45: an electrowetting drop whose contact line is pinned, `explained` with nothing
-named at seed 0). Since round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a Preisach-type core with
+named at seed 0; HOLDOUT44's in round 46: an antagonistic pair of pneumatic muscles whose braids' contacts slide with
+dry friction, `explained` with nothing named at seed 0). Since round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a Preisach-type core with
 nothing named, counted right.
 """
 
@@ -64,8 +65,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 77
-    assert sum(r["clean"] for r in rows) == 50
+    assert len(rows) == 78
+    assert sum(r["clean"] for r in rows) == 51
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -77,14 +78,14 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 69/77 right in round 45 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-43, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT36's, HOLDOUT40's and
+    # 70/78 right in round 46 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-44, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT36's, HOLDOUT40's and
     # HOLDOUT42's counted wrong; HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core);
-    # at least 66 (86 %):
+    # at least 67 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 66, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 67, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
