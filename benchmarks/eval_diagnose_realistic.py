@@ -321,7 +321,8 @@ def main(argv=None):
     summarise(rows, total)
     if a.json:
         with open(a.json, "w") as fh:
-            json.dump({"rows": rows, "right": sum(r["right"] for r in rows), "n": len(rows), "seconds": total}, fh, indent=1)
+            json.dump({"rows": rows, "right": sum(r["right"] for r in rows), "n": len(rows), "seconds": total},
+                      fh, indent=1)
     return 0
 
 
