@@ -3,7 +3,7 @@
 import numpy as np
 
 __all__ = ["decaying_sines", "staircase_holds", "triangles", "bandlimited_random", "quasi_static_loops",
-           "unipolar_triangles"]
+           "unipolar_triangles", "on_off_intervals"]
 
 
 def decaying_sines(dt, n, freqs, amp, offset=0.0, rng=None):
@@ -79,3 +79,20 @@ def chirp(dt, n, f0, f1, amp):
     T = t[-1] if t[-1] > 0 else 1.0
     phase = 2 * np.pi * (f0 * t + 0.5 * (f1 - f0) * t ** 2 / T)
     return amp * np.sin(phase)
+
+
+def on_off_intervals(t, on_range, off_range, rng):
+    """A machine switching on and off at random over the times t (a pump on its pressure switch, a fan on its
+    thermostat, a blow gun in use): off for a time drawn uniformly from `off_range`, on for one from `on_range`, and so
+    on to the end. Returns the on intervals [(start, duration)] and a 0/1 mask of the samples inside them."""
+    t = np.asarray(t, float)
+    ivs = []
+    s = float(rng.uniform(*off_range))
+    while s < t[-1]:
+        d = float(rng.uniform(*on_range))
+        ivs.append((s, d))
+        s += d + float(rng.uniform(*off_range))
+    on = np.zeros(len(t))
+    for a, d in ivs:
+        on[(t >= a) & (t < a + d)] = 1.0
+    return ivs, on

@@ -17,6 +17,7 @@ import math
 import numpy as np
 from numba import njit
 from scipy.optimize import brentq
+from .excitations import on_off_intervals
 
 
 # ---- the rate-independent core: a NiTi wire's martensite fraction against a bias spring ----
@@ -354,14 +355,8 @@ def fan_cooling(t, D, tau, on_range, off_range, rng):
     """The wire's cooling (K) by the fan, and its on intervals [(start, length)]: a first-order lag of D times the fan's
     on/off state (held over each sample), exact between samples."""
     t = np.asarray(t, float)
-    ivs, s = [], float(rng.uniform(*off_range))
-    while s < t[-1]:
-        d = float(rng.uniform(*on_range))
-        ivs.append((s, d))
-        s += d + float(rng.uniform(*off_range))
-    target = np.zeros(len(t))
-    for a, d in ivs:
-        target[(t >= a) & (t < a + d)] = D
+    ivs, on = on_off_intervals(t, on_range, off_range, rng)
+    target = D * on
     out = np.zeros(len(t))
     x = 0.0
     for k in range(1, len(t)):

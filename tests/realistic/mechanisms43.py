@@ -17,6 +17,7 @@ import numpy as np
 from numba import njit
 from scipy.linalg import expm
 from scipy.optimize import brentq
+from .excitations import on_off_intervals
 
 
 # ---- the rate-independent core: an electrowetting drop's contact line pinned by the coating's defects ----
@@ -409,13 +410,4 @@ def lockin_filter(u, dtf, tau):
 def pump_cycles(t, on_range, off_range, rng):
     """The pump's runs [(start, duration)] over t (the first after an off time), and a 0/1 mask of the samples in
     them."""
-    ivs = []
-    s = rng.uniform(*off_range)
-    while s < t[-1]:
-        d = rng.uniform(*on_range)
-        ivs.append((s, d))
-        s += d + rng.uniform(*off_range)
-    on = np.zeros(len(t))
-    for a, d in ivs:
-        on[(t >= a) & (t < a + d)] = 1.0
-    return ivs, on
+    return on_off_intervals(t, on_range, off_range, rng)

@@ -17,6 +17,7 @@ import math
 import numpy as np
 from numba import njit
 from scipy.special import gamma as _gamma
+from .excitations import on_off_intervals
 
 
 # ---- the rate-independent core: an antagonistic pair of McKibben muscles with braid friction ----
@@ -451,13 +452,4 @@ def amr_compression(theta_max_deg):
 def blow_gun(t, on_range, off_range, rng):
     """The blow gun's bursts [(start, duration)] over t (the first after an off time), and a 0/1 mask of the samples in
     them."""
-    ivs = []
-    s = rng.uniform(*off_range)
-    while s < t[-1]:
-        d = rng.uniform(*on_range)
-        ivs.append((s, d))
-        s += d + rng.uniform(*off_range)
-    on = np.zeros(len(t))
-    for a, d in ivs:
-        on[(t >= a) & (t < a + d)] = 1.0
-    return ivs, on
+    return on_off_intervals(t, on_range, off_range, rng)
