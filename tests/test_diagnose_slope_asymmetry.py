@@ -12,7 +12,8 @@ falling amplitude, 24 s at 1 kHz, read through
 * a gap sensor, ``y = x / (1 - 0.3 x)`` (x the core's output scaled to +-1): the slope rises
   from 0.59 to 2.0 (relative to the middle's 1) from one end to the other, no end flattens;
 * the same core through a saturating map with an asymmetry, ``tanh(1.3 x)/tanh(1.3) + 0.12 x^2``:
-  both ends flatten, unequally (a true pair: both must stay named).
+  both ends flatten, unequally (a true pair: the saturation must stay named; the asymmetry, which
+  gains under a noise variance once the saturating map is off-centre, is tentative since round 47).
 
 Output noise 0.2 % of the span.
 """
@@ -79,7 +80,15 @@ def test_a_gap_sensor_is_an_asymmetry_alone():
 def test_a_saturation_with_an_asymmetry_keeps_both():
     t, v, y, sigma = _record(_saturating_pair, 6)
     d = diagnose(t, v, y)
-    assert set(d.effects) == {"saturation", "asymmetry"}
+    # the saturation is named, not given way to an asymmetry alone (round 34's rule)
+    assert d.effects[0] == "saturation" and d.steps[0]["evidence"]["extension"]["kind"] != "output_exp_slope"
+    # both parts stay in the model; the asymmetry after the saturation's off-centre map gains little held out
+    # (seeds 0 ... 8 measured in round 47: 0.77 ... 1.03 noise variances at its step, as much lost without it), so
+    # it is tentative: on the records left unexplained (seeds 0-2, 4, 5, 7, 8) by round 36's rule, on those explained
+    # (seeds 3 and 6) by round 47's (EXPLAINED_ASYMMETRY_GAIN)
+    assert d.verdict == "explained" and d.tentative == ["asymmetry"]
+    assert [st["effect"] for st in d.steps] == ["saturation", "asymmetry"]
+    assert d.rms_heldout < 1.5 * sigma
 
 
 def test_an_off_centre_map_gives_way_to_an_asymmetry_that_explains_alone():

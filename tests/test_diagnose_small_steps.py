@@ -18,7 +18,7 @@ import numpy as np
 import pytest
 
 from hystcomp.diagnose import diagnose
-from hystcomp.diagnose.small_steps import LATER_GAIN, small_later_steps as _small_later_steps
+from hystcomp.diagnose.small_steps import EXPLAINED_SHAPE_GAIN, LATER_GAIN, small_later_steps as _small_later_steps
 
 
 def _step(effect, gain, **kw):
@@ -82,6 +82,8 @@ def test_what_the_rule_leaves_alone(case):
     if case == "first":
         steps = [_step("saturation", 1.0), _step("asymmetry", 40.0)]
     elif case == "explained":
+        # on a record explained only an asymmetry is held back (round 47)
+        steps = [_step("saturation", 40.0), _step("delay", 1.0)]
         verdict = "explained"
     elif case == "paired":
         steps[1]["evidence"]["paired"] = "fitted jointly with drift (slow_drift)"
@@ -150,3 +152,93 @@ def test_the_split_not_taken_is_summarised_by_the_same_rule():
     # no drift named by the blocks: the end is taken; the blocks' summary names what the rule names
     assert chosen["effects"] == ["asymmetry"] and chosen["tentative"] == ["initial_state"]
     assert chosen["other_split"]["effects"] == ["saturation"] and chosen["other_split"]["tentative"] == ["delay"]
+
+
+def test_on_a_record_explained_a_small_later_asymmetry_is_tentative():
+    # round 47: on records explained, the asymmetries added after the first step below 2.5 noise variances were wrong
+    # 15 times in 16 over the forty-five committed sets
+    assert EXPLAINED_SHAPE_GAIN == 2.5
+    out = _run([_step("delay", 40.0), _loss("asymmetry", 0.81, 0.78)], verdict="explained")
+    assert out["verdict"] == "explained"
+    assert out["effects"] == ["delay"] and out["tentative"] == ["asymmetry"]
+    said = out["steps"][1]["evidence"]["small_later_step"]
+    assert said == ("added after the first step on a record explained, it lowers the held-out mean square by only "
+                    "0.81 noise variances, and the final model loses 0.78 without it (naming needs 2.5): tentative, "
+                    "not named")
+    assert "tentative: asymmetry (0.81), later steps gaining under 2.5 noise variances" in out["stopped"]
+    assert "asymmetry" not in out["ambiguous"] and "delay" in out["ambiguous"]
+
+
+@pytest.mark.parametrize("gain, loss, named", [(2.49, None, False), (2.51, None, True), (0.34, 2.71, True),
+                                               (1.0, 2.49, False), (-0.2, None, True)])
+def test_the_bound_on_a_record_explained(gain, loss, named):
+    # 0.34 gained, 2.71 lost without it: HOLDOUT44's pair at seed 1, the smallest right asymmetry above the bound
+    step = _step("asymmetry", gain) if loss is None else _loss("asymmetry", gain, loss)
+    out = _run([_step("creep", 30.0), step], verdict="explained")
+    assert out["effects"] == (["creep", "asymmetry"] if named else ["creep"])
+    assert out["verdict"] == "explained"
+
+
+@pytest.mark.parametrize("effect", ["initial_state", "drift", "gain_drift", "delay", "rate_dependence", "creep"])
+def test_on_a_record_explained_other_effects_stay_named(effect):
+    out = _run([_step("asymmetry", 30.0), _step(effect, 0.5)], verdict="explained")
+    assert out["effects"] == ["asymmetry", effect] and out["tentative"] == []
+
+
+def test_on_a_record_explained_a_small_saturation_is_tentative_at_any_step():
+    # round 47: on records explained, the saturations below 3.5 noise variances were all wrong (12, six on clean
+    # records); the smallest right one gained 3.72
+    out = _run([_step("saturation", 0.63)], verdict="explained")
+    assert out["effects"] == [] and out["tentative"] == ["saturation"] and out["verdict"] == "explained"
+    said = out["steps"][0]["evidence"]["small_later_step"]
+    assert said.startswith("found at the first step on a record explained, it lowers the held-out mean square by "
+                           "only 0.63 noise variances (naming needs 2.5)")
+    assert "tentative: saturation (0.63), steps gaining under 2.5 noise variances" in out["stopped"]
+    out = _run([_step("saturation", 3.72)], verdict="explained")
+    assert out["effects"] == ["saturation"] and out["tentative"] == []
+    out = _run([_step("initial_state", 9.0), _loss("output_saturation", 2.37, 2.37)], verdict="explained")
+    assert out["effects"] == ["initial_state"] and out["tentative"] == ["output_saturation"]
+    # on a record left unexplained the first step stays named, whatever it is
+    assert _run([_step("saturation", 0.63)])["effects"] == ["saturation"]
+
+
+def test_on_a_record_explained_the_first_asymmetry_and_a_pair_stay_named():
+    # a first asymmetry is exempt: right ones gained 1.53 and 2.25 noise variances in the committed sets
+    assert _run([_step("asymmetry", 1.0)], verdict="explained")["effects"] == ["asymmetry"]
+    paired = _step("asymmetry", 1.0, evidence={"paired": "fitted jointly with saturation (output_tanh)"})
+    assert _run([_step("saturation", 30.0), paired], verdict="explained")["effects"] == ["saturation", "asymmetry"]
+
+
+def test_on_a_seen_explained_record_a_small_asymmetry_is_tentative_and_stays_in_the_model():
+    from realistic import HOLDOUT44
+
+    r = HOLDOUT44["holdout44_delay_playback_start_relay_trigger_sprayer_521hz"](0)
+    rep = diagnose(r.t, r.v, r.y, progress=False)
+    # measured in round 46: the dead time, then an asymmetry gaining 0.81 noise variances (0.78 lost without it),
+    # explained at 1.00 true noise levels; round 47 holds the asymmetry back
+    assert rep.verdict == "explained"
+    assert rep.effects == ["delay"] and rep.tentative == ["asymmetry"], rep.report()
+    ev = rep.steps[1]["evidence"]
+    assert rep.steps[1]["tentative"] and ev["held_out_gain_noise_variances"] < EXPLAINED_SHAPE_GAIN
+    assert "on a record explained" in ev["small_later_step"]
+    # the dead time is reported with its near tie, a lag (rate_dependence), as in round 46
+    assert "verdict: explained; effects: delay (or rate_dependence) (tentative, not named: asymmetry)" in rep.report()
+    held = ~rep._rec.train
+    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+
+
+def test_on_a_seen_clean_record_a_small_saturation_is_tentative_and_nothing_is_named():
+    from realistic import HOLDOUT40
+
+    r = HOLDOUT40["holdout40_clean_depoled_pzt_grain_switching_windscreen_wiper_1385hz"](0)
+    rep = diagnose(r.t, r.v, r.y, progress=False)
+    # measured in round 46: a saturation (a cubic output map) gaining 0.63 noise variances at the first step, explained
+    # at 1.04 noise floors, on a clean core whose grains switch (not quite PI); round 47 holds it back
+    assert rep.verdict == "explained"
+    assert rep.effects == [] and rep.tentative == ["saturation"], rep.report()
+    assert rep.steps[0]["tentative"] and "found at the first step" in rep.steps[0]["evidence"]["small_later_step"]
+    assert "verdict: explained; effects: none (tentative, not named: saturation)" in rep.report()
+    held = ~rep._rec.train
+    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
