@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; SLOWTIME in round 47, 475, with HOLDOUT45's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-44 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-45 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,10 +49,11 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1094/1395 (78.4 %) over the forty-five sets in round 46
-# (the forty-four earlier sets 1074/1365 as in round 45; HOLDOUT44 20/30 when fresh and as committed: an antagonistic
-# pair of pneumatic muscles, close to a PI core), so it stays open.
-# At seed 0, as run here, 371/465 (79.8 %), 418.5 needed, so
+# The issue's criterion is over three seeds: 1121/1425 (78.7 %) over the forty-six sets in round 47
+# (the forty-five earlier sets 1113/1395 with round 47's rule on small saturations and later asymmetries of explained
+# records, 1094 before; HOLDOUT45 8/30 when fresh and as committed: a prestressed Terfenol-D rod whose magnetisation
+# saturates), so it stays open.
+# At seed 0, as run here, 382/475 (80.4 %), 427.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -63,22 +64,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43) and 20/30 (HOLDOUT44)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44) and 8/30 (HOLDOUT45)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1094/1395 right over three seeds of the forty-five sets "
-                                         "(78.4 %); at seed 0 371/465 (79.8 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1121/1425 right over three seeds of the forty-six sets "
+                                         "(78.7 %); at seed 0 382/475 (80.4 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 371/465 right at seed 0 in round 46 (79.8 %; 365/455 in round 45); at least 361, ten runs of
+    # regression guard: 382/475 right at seed 0 in round 47 (80.4 %; 371/465 in round 46); at least 372, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 465
-    assert right >= 361, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 475
+    assert right >= 372, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -120,10 +121,15 @@ NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
 #: seed 0 (`explained` at 1.07 true noise levels), nothing at seeds 1 and 2 (`explained` at 1.29-1.30).
 #: HOLDOUT40's soft PZT disc whose grains switch by 180 deg (its polarisation saturates once the grains have
 #: switched; the depolarising field shears the loop): fresh in round 42 a saturation (a cubic output map) named
-#: at every seed, `explained` at 1.06-1.20 true noise levels
+#: at every seed, `explained` at 1.06-1.20 true noise levels. Since round 47 a saturation that gained under 2.5 noise
+#: variances on an `explained` record is tentative, not named: HOLDOUT36's at seed 0 (0.52) and HOLDOUT40's (0.63-1.22)
+#: are. HOLDOUT45's prestressed Terfenol-D rod (every region magnetised as a tanh of a play, the travel its square),
+#: fresh in round 47: a saturation of 6.4 noise variances named at seed 2, `explained` at 1.07; at seeds 0 and 1 the
+#: saturation held tentative (2.01 and 0.62)
 SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
                     "holdout36_clean_servo_torque_motor_sleep_spindles_1455hz",
-                    "holdout40_clean_depoled_pzt_grain_switching_windscreen_wiper_1385hz")
+                    "holdout40_clean_depoled_pzt_grain_switching_windscreen_wiper_1385hz",
+                    "holdout45_clean_terfenol_rod_pinball_flippers_1213hz")
 
 
 def _named_on_clean(rows):
@@ -144,19 +150,20 @@ def test_no_effect_named_on_clean_records(rows):
     # HOLDOUT32's Dahl-friction core, HOLDOUT33's Stoner-Wohlfarth armature, HOLDOUT35's capstan cable and
     # HOLDOUT39's critical-state rod and HOLDOUT42's shape-memory wire are not PI models:
     # nothing may be named on them, but they may be left unexplained (tests/test_diagnose_realistic_sample.py,
-    # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads, HOLDOUT36's saturating iron and HOLDOUT40's switching PZT may
-    # get a saturation and nothing else (SATURATING_CLEAN)
+    # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads,
+    # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT and HOLDOUT45's Terfenol-D rod may get a saturation and
+    # nothing else (SATURATING_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
-                                        "on HOLDOUT35's capstan cable at seed 2 and on HOLDOUT36's saturating "
-                                        "random-field Ising iron (seed 0 here), on HOLDOUT40's switching PZT "
-                                        "disc (every seed), on HOLDOUT41's pinned-wall ferrite ring at seed 2 "
-                                        "and on HOLDOUT42's shape-memory wire at seed 2 (with an asymmetry); an "
-                                        "asymmetry on HOLDOUT43's electrowetting drop at seed 1")
+                                        "on HOLDOUT41's pinned-wall ferrite ring at seed 2, on HOLDOUT45's "
+                                        "Terfenol-D rod at seed 2 and on HOLDOUT42's shape-memory wire at seed 2 "
+                                        "(with an asymmetry); an asymmetry on HOLDOUT43's electrowetting drop at "
+                                        "seed 1 (since round 47 the small saturations of HOLDOUT35's cable, "
+                                        "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
@@ -173,7 +180,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45) or HOLDOUT44 (round 46). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46) or HOLDOUT45 (round 47). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -200,8 +207,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 103/153 runs (34/51 at seed 0) of the combined "
-                                        "cases of the forty-five sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 106/156 runs (35/52 at seed 0) of the combined "
+                                        "cases of the forty-six sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "

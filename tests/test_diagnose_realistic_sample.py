@@ -6,7 +6,7 @@ benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sampl
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (51 clean records in all; HOLDOUT44's took 3.4 s in round 46's measurement). 78 runs at seed 0; 70 were right in round 46
+other set (52 clean records in all; HOLDOUT45's took 3.9 s in round 47's measurement). 79 runs at seed 0; 73 were right in round 47
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -28,8 +28,10 @@ domain walls are pinned in random landscapes, `explained` with nothing named at 
 shape-memory wire against a bias spring, not a PI core, left unexplained with nothing named at seed 0, see
 NOT_PI_CLEAN; HOLDOUT43's in round 45: an electrowetting drop whose contact line is pinned, `explained` with nothing
 named at seed 0; HOLDOUT44's in round 46: an antagonistic pair of pneumatic muscles whose braids' contacts slide with
-dry friction, `explained` with nothing named at seed 0). Since round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a Preisach-type core with
-nothing named, counted right.
+dry friction, `explained` with nothing named at seed 0; HOLDOUT45's in round 47: a prestressed Terfenol-D rod,
+`explained` with a saturation held tentative at seed 0). Since round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
+Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
+tentative, not named, and those records counted right.
 """
 
 import os
@@ -65,8 +67,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 78
-    assert sum(r["clean"] for r in rows) == 51
+    assert len(rows) == 79
+    assert sum(r["clean"] for r in rows) == 52
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -78,14 +80,14 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 70/78 right in round 46 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-44, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT36's, HOLDOUT40's and
-    # HOLDOUT42's counted wrong; HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core);
-    # at least 67 (86 %):
+    # 73/79 right in round 47 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-45, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's and HOLDOUT42's counted wrong;
+    # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
+    # round 47's rule on small saturations of explained records); at least 70 (89 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 67, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 70, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
@@ -95,11 +97,11 @@ def test_no_effect_named_on_clean_records(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed), "
-                                        "on HOLDOUT36's random-field Ising iron at seed 0 (round 38) and on "
-                                        "HOLDOUT40's switching PZT disc at seed 0 (round 42)")
+                                        "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed; "
+                                        "3.50 noise variances); HOLDOUT36's and HOLDOUT40's small saturations "
+                                        "are tentative since round 47")
 def test_no_effect_named_on_any_clean_record(rows):
-    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 3
+    assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 4
     named = [r for r in rows if r["clean"] and r["effects"]]
     assert not named, _table(named)
 
