@@ -101,6 +101,13 @@ def test_what_the_rule_leaves_alone(case):
     assert not any(s.get("tentative") for s in out["steps"])
 
 
+def _assert_model_reproduces_the_rms(rep, r):
+    """The returned model, tentative parts and all, reproduces the reported held-out RMS (to 1e-9 relative)."""
+    held = ~rep._rec.train
+    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
+    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+
+
 def test_on_a_seen_record_the_part_stays_in_the_model():
     from realistic import HOLDOUT9
 
@@ -119,9 +126,7 @@ def test_on_a_seen_record_the_part_stays_in_the_model():
     assert d["effects"] == ["asymmetry"] and d["tentative_effects"] == ["initial_state"]
     assert d["steps"][1]["tentative"] is True
     # the model keeps the tentative part: it reproduces the reported held-out RMS
-    held = ~rep._rec.train
-    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
-    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+    _assert_model_reproduces_the_rms(rep, r)
 
 
 def test_on_a_seen_record_a_step_the_final_model_needs_is_named():
@@ -223,9 +228,7 @@ def test_on_a_seen_explained_record_a_small_asymmetry_is_tentative_and_stays_in_
     assert "on a record explained" in ev["small_later_step"]
     # the dead time is reported with its near tie, a lag (rate_dependence), as in round 46
     assert "verdict: explained; effects: delay (or rate_dependence) (tentative, not named: asymmetry)" in rep.report()
-    held = ~rep._rec.train
-    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
-    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+    _assert_model_reproduces_the_rms(rep, r)
 
 
 def test_on_a_seen_clean_record_a_small_saturation_is_tentative_and_nothing_is_named():
@@ -239,6 +242,4 @@ def test_on_a_seen_clean_record_a_small_saturation_is_tentative_and_nothing_is_n
     assert rep.effects == [] and rep.tentative == ["saturation"], rep.report()
     assert rep.steps[0]["tentative"] and "found at the first step" in rep.steps[0]["evidence"]["small_later_step"]
     assert "verdict: explained; effects: none (tentative, not named: saturation)" in rep.report()
-    held = ~rep._rec.train
-    rms = float(np.sqrt(np.mean((r.y - rep.model.simulate(r.v))[held] ** 2)))
-    assert rms == pytest.approx(rep.rms_heldout, rel=1e-9)
+    _assert_model_reproduces_the_rms(rep, r)

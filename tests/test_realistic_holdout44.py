@@ -43,7 +43,8 @@ from realistic import mechanisms44 as m44
 from realistic import signals44 as s44
 from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
                                       _assert_spans_and_rates, _linear_misfit, _rms)
-from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms, seg as _seg
+from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
+                                 read_late_misfit as _read_late, seg as _seg)
 
 pytestmark = pytest.mark.slow
 
@@ -74,13 +75,6 @@ def _rec(name, seed):
 
 def _core(e, v, state=None):
     return c44._core_of(e, v, state=state)
-
-
-def _fit(y, h):
-    """The largest and the RMS residual of y beyond a gain and an offset on h (least squares)."""
-    A = np.c_[h, np.ones_like(h)]
-    d = y - A @ np.linalg.lstsq(A, y, rcond=None)[0]
-    return float(np.abs(d).max()), _rms(d)
 
 
 def _small(n=5, cseed=3, alpha=22.0, c=0.88, k=0.55, K=4.0, mu_tot=0.45, ell=0.006):
@@ -532,11 +526,9 @@ def test_start_relay_under_trigger_sprayer():
         assert _rms(rec.y - y) < 1.5 * rec.noise_std
         # the reading is the core delayed by T_op: against the core run on a grid eight times finer and read T_op late,
         # within 0.1 sigma RMS
-        R = 8
-        tf = np.arange(R * (len(rec.t) - 1) + 1) * dt / R
-        yf = _core(e, top * s44.knots_at(tf, e["knots"]) / e["p"].max())
-        late = np.interp(rec.t - e["T_op"], tf, yf, left=yf[0])
-        assert _rms(late - y) < 0.1 * rec.noise_std
+        late = _read_late(rec.t, y, e["T_op"], lambda u: _core(e, u),
+                          lambda tt: top * s44.knots_at(tt, e["knots"]) / e["p"].max())
+        assert late < 0.1 * rec.noise_std
         # the sprayer: released (exactly 0) at either end, squeezed fully once
         p = e["p"]
         assert p[0] == 0.0 and p[-1] == 0.0 and max(k[1] for k in e["knots"]) == 1.0

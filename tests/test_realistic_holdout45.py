@@ -44,7 +44,8 @@ from realistic import mechanisms45 as m45
 from realistic import signals45 as s45
 from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
                                       _assert_spans_and_rates, _linear_misfit, _rms)
-from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms, seg as _seg
+from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
+                                 read_late_misfit as _read_late, seg as _seg)
 
 pytestmark = pytest.mark.slow
 
@@ -73,13 +74,6 @@ def _rec(name, seed):
 
 def _core(e, v, z0=None):
     return c45._core_of(e, v, z0=z0)
-
-
-def _fit(y, h):
-    """The largest and the RMS residual of y beyond a gain and an offset on h (least squares)."""
-    A = np.c_[h, np.ones_like(h)]
-    d = y - A @ np.linalg.lstsq(A, y, rcond=None)[0]
-    return float(np.abs(d).max()), _rms(d)
 
 
 def _small(n=6, rseed=3, c=0.2, Hb=0.66, h=0.55, kappa=7.0, unipolar=False):
@@ -409,11 +403,9 @@ def test_conditioner_delay_under_stapler():
         assert _rms(rec.y - y) < 1.5 * rec.noise_std
         # the reading is the core delayed by T_d: against the core run on a grid eight times finer and read T_d late,
         # within 0.1 sigma RMS
-        R = 8
-        tf = np.arange(R * (len(rec.t) - 1) + 1) * dt / R
-        yf = _core(e, top * s45.knots_at(tf, e["knots"]) / e["p"].max())
-        late = np.interp(rec.t - e["T_d"], tf, yf, left=yf[0])
-        assert _rms(late - y) < 0.1 * rec.noise_std
+        late = _read_late(rec.t, y, e["T_d"], lambda u: _core(e, u),
+                          lambda tt: top * s45.knots_at(tt, e["knots"]) / e["p"].max())
+        assert late < 0.1 * rec.noise_std
         p = e["p"]
         assert p[0] == 0.0 and p[-1] == 0.0 and max(k[1] for k in e["knots"]) == 1.0
         # the conditioner moves the output beyond a gain and an offset on the core: over 7 sigma RMS (measured 7.6 ...

@@ -1,7 +1,8 @@
 """Small tools the later sets' law tests (``tests/test_realistic_holdoutNN.py``, HOLDOUT31 on)
 share: every play's output written from the play's definition, the closeness of a record to a
-Prandtl-Ishlinskii model (12 plays fitted by NNLS), a segment of a branch and the holds of a
-drive. Written once here (they had been copied into every set's test); each test binds them under
+Prandtl-Ishlinskii model (12 plays fitted by NNLS), how far an effect moves a reading beyond a gain
+and an offset on its core, a dead time checked on a finer grid, a segment of a branch and the holds
+of a drive. Written once here (they had been copied into every set's test); each test binds them under
 its old private names.
 """
 
@@ -34,6 +35,25 @@ def pi_fit_rms(y, v, n_plays=12):
     w, _ = nnls(A, y)
     d = y - A @ w
     return rms(d), float(np.abs(d).max())
+
+
+def beyond_gain_and_offset(y, h):
+    """The largest and the RMS residual of y beyond a gain and an offset on h (least squares): how far an effect
+    moves a reading from its core's."""
+    A = np.c_[h, np.ones_like(h)]
+    d = y - A @ np.linalg.lstsq(A, y, rcond=None)[0]
+    return float(np.abs(d).max()), rms(d)
+
+
+def read_late_misfit(t, y, delay, core_of_drive, drive_at, fine=8):
+    """The RMS difference between y on the uniform times t (from 0) and the core run on a grid `fine` times finer and
+    read `delay` late (linear interpolation; the core's first value before it starts): a dead time checked apart
+    from how the record delays its drive. `drive_at(times)` gives the drive, `core_of_drive(drive)` the core's
+    output."""
+    dt = t[1] - t[0]
+    tf = np.arange(fine * (len(t) - 1) + 1) * dt / fine
+    yf = core_of_drive(drive_at(tf))
+    return rms(np.interp(t - delay, tf, yf, left=yf[0]) - y)
 
 
 def seg(a, b, n=60):
