@@ -7,6 +7,7 @@ from realistic import (ALL, HOLDOUT, HOLDOUT2, HOLDOUT3, HOLDOUT4, HOLDOUT5, HOL
                        TUNING, family)
 from realistic import excitations as ex
 from realistic.record import FAMILIES
+from realistic.set_checks import read_late_misfit
 from realistic.set_checks import rms as _rms  # noqa: F401  (the sets' law tests import it from here)
 from realistic import mechanisms as me
 
@@ -394,6 +395,29 @@ def _assert_drives_start_at_zero(H, prefix, rec, skip=()):
         for s in range(3):
             r = rec(short, s)
             assert r.extra.get("drive", r.v)[0] == pytest.approx(0.0, abs=1e-9), (name, s)
+
+
+def _assert_dead_time_record(rec, key, bounds, core, knots_at):
+    """A later set's dead-time record (HOLDOUT44, HOLDOUT45): the programme ``extra["knots"]`` through `knots_at`,
+    scaled to ``extra["top"]``, reaches the core ``extra[key]`` seconds late (``D`` samples, within `bounds`), 0 before
+    it starts (1e-12); the reading is the core of that late drive within 1.5 sigma, and the core run on a grid eight
+    times finer and read late, within 0.1 sigma RMS; the programme is 0 at either end and reaches 1 once.
+    `core(drive)` is the set's core. Returns the core's output on the late drive (for the effect's size)."""
+    e = rec.extra
+    T, dt = e[key], rec.t[1]
+    assert bounds[0] <= T <= bounds[1] and e["D"] == pytest.approx(T / dt, rel=1e-14)
+    top, p = e["top"], e["p"]
+
+    def drive_at(tt):
+        return top * knots_at(tt, e["knots"]) / p.max()
+
+    np.testing.assert_allclose(e["v_late"], drive_at(rec.t - T), atol=1e-12)
+    assert np.all(e["v_late"][rec.t < T] == 0.0)
+    y = core(e["v_late"])
+    assert _rms(rec.y - y) < 1.5 * rec.noise_std
+    assert read_late_misfit(rec.t, y, T, core, drive_at) < 0.1 * rec.noise_std
+    assert p[0] == 0.0 and p[-1] == 0.0 and max(k[1] for k in e["knots"]) == 1.0
+    return y
 
 
 def test_holdout8_was_measured_joined_all_and_is_well_formed():

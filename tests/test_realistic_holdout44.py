@@ -41,10 +41,10 @@ from realistic import HOLDOUT44, family
 from realistic import cases_holdout44 as c44
 from realistic import mechanisms44 as m44
 from realistic import signals44 as s44
-from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
-                                      _assert_spans_and_rates, _linear_misfit, _rms)
+from test_realistic_generator import (_assert_dead_time_record, _assert_drives_start_at_zero, _assert_measured_set,
+                                      _assert_set_layout, _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
-                                 read_late_misfit as _read_late, seg as _seg)
+                                 seg as _seg)
 
 pytestmark = pytest.mark.slow
 
@@ -512,26 +512,13 @@ def test_vented_regulator_and_braid_lock_under_discus():
 # ---- delay: the playback's start relay, under a trigger sprayer ----
 
 def test_start_relay_under_trigger_sprayer():
+    # the programme T_op late (1e-12), the reading the core of it (1.5 sigma) and the core run on a grid eight
+    # times finer and read T_op late (0.1 sigma RMS), the programme 0 at either end and reaching 1 once
+    # (_assert_dead_time_record)
     for seed in (0, 1, 2):
         rec = _rec(DELAY, seed)
         e = rec.extra
-        dt = rec.t[1]
-        assert 0.005 <= e["T_op"] <= 0.009 and e["D"] == pytest.approx(e["T_op"] / dt, rel=1e-14)
-        # the command the regulators got: the programme T_op late, 0 before it starts (1e-12)
-        top = e["top"]
-        np.testing.assert_allclose(e["v_late"], top * s44.knots_at(rec.t - e["T_op"], e["knots"]) / e["p"].max(),
-                                   atol=1e-12)
-        assert np.all(e["v_late"][rec.t < e["T_op"]] == 0.0)
-        y = _core(e, e["v_late"])
-        assert _rms(rec.y - y) < 1.5 * rec.noise_std
-        # the reading is the core delayed by T_op: against the core run on a grid eight times finer and read T_op late,
-        # within 0.1 sigma RMS
-        late = _read_late(rec.t, y, e["T_op"], lambda u: _core(e, u),
-                          lambda tt: top * s44.knots_at(tt, e["knots"]) / e["p"].max())
-        assert late < 0.1 * rec.noise_std
-        # the sprayer: released (exactly 0) at either end, squeezed fully once
-        p = e["p"]
-        assert p[0] == 0.0 and p[-1] == 0.0 and max(k[1] for k in e["knots"]) == 1.0
+        y = _assert_dead_time_record(rec, "T_op", (0.005, 0.009), lambda u: _core(e, u), s44.knots_at)
         # the relay moves the output beyond a gain and an offset on the core: over 7 sigma RMS (measured 11.3 ... 16.4)
         # and at most (measured 69 ... 103)
         mx, rms = _fit(y, _core(e, e["drive"]))

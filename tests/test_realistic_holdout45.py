@@ -42,10 +42,10 @@ from realistic import HOLDOUT45, family
 from realistic import cases_holdout45 as c45
 from realistic import mechanisms45 as m45
 from realistic import signals45 as s45
-from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
-                                      _assert_spans_and_rates, _linear_misfit, _rms)
+from test_realistic_generator import (_assert_dead_time_record, _assert_drives_start_at_zero, _assert_measured_set,
+                                      _assert_set_layout, _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
-                                 read_late_misfit as _read_late, seg as _seg)
+                                 seg as _seg)
 
 pytestmark = pytest.mark.slow
 
@@ -390,24 +390,13 @@ def test_overdriven_rod_under_whammy_bar():
 # ---- delay: the probe's conditioner, under a stapler ----
 
 def test_conditioner_delay_under_stapler():
+    # the programme T_d late (1e-12), the reading the core of it (1.5 sigma) and the core run on a grid eight
+    # times finer and read T_d late (0.1 sigma RMS), the programme 0 at either end and reaching 1 once
+    # (_assert_dead_time_record)
     for seed in (0, 1, 2):
         rec = _rec(DELAY, seed)
         e = rec.extra
-        dt = rec.t[1]
-        assert 0.0035 <= e["T_d"] <= 0.007 and e["D"] == pytest.approx(e["T_d"] / dt, rel=1e-14)
-        top = e["top"]
-        np.testing.assert_allclose(e["v_late"], top * s45.knots_at(rec.t - e["T_d"], e["knots"]) / e["p"].max(),
-                                   atol=1e-12)
-        assert np.all(e["v_late"][rec.t < e["T_d"]] == 0.0)
-        y = _core(e, e["v_late"])
-        assert _rms(rec.y - y) < 1.5 * rec.noise_std
-        # the reading is the core delayed by T_d: against the core run on a grid eight times finer and read T_d late,
-        # within 0.1 sigma RMS
-        late = _read_late(rec.t, y, e["T_d"], lambda u: _core(e, u),
-                          lambda tt: top * s45.knots_at(tt, e["knots"]) / e["p"].max())
-        assert late < 0.1 * rec.noise_std
-        p = e["p"]
-        assert p[0] == 0.0 and p[-1] == 0.0 and max(k[1] for k in e["knots"]) == 1.0
+        y = _assert_dead_time_record(rec, "T_d", (0.0035, 0.007), lambda u: _core(e, u), s45.knots_at)
         # the conditioner moves the output beyond a gain and an offset on the core: over 7 sigma RMS (measured 7.6 ...
         # 11.5) and at most (measured 71 ... 106)
         mx, rms = _fit(y, _core(e, e["drive"]))
