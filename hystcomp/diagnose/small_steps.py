@@ -1,9 +1,9 @@
 """Names held back after the search: on a record left unexplained, an effect
 added after the first step whose step gained little held out, and which the
 final model does not need either, is tentative, not named; on a record
-explained, a saturation or a later asymmetry that gained little (:func:`small_later_steps`, called by
-:mod:`hystcomp.diagnose.search` on the reported split and on the summary of
-the split not taken)."""
+explained, so is a saturation or a later asymmetry that gained little
+(:func:`small_later_steps`, called by :mod:`hystcomp.diagnose.search` on the
+reported split and on the summary of the split not taken)."""
 
 __all__ = ["LATER_GAIN", "EXPLAINED_SHAPE_GAIN", "small_later_steps"]
 
@@ -54,9 +54,9 @@ def small_later_steps(kw, say):
     record explained, a saturation (at any step) or an asymmetry added
     after the first step under :data:`EXPLAINED_SHAPE_GAIN` (round 47).
     A pair's steps (judged together), dropped and tentative steps are left
-    as they are.  The parts
-    stay in the model, and the verdict does not change.  Applied to the
-    reported split, after the choice between splits; returns `kw` updated."""
+    as they are.  The parts stay in the model, and the verdict does not
+    change.  Applied to the reported split, after the choice between
+    splits; returns `kw` updated."""
     if not kw["effects"] or not kw.get("steps"):
         return kw
     if kw["verdict"] == "unexplained":
@@ -71,9 +71,10 @@ def small_later_steps(kw, say):
         gain = ev.get("held_out_gain_noise_variances")
         if st.get("dropped") or st.get("tentative") or ev.get("paired") or gain is None:
             continue
-        if i == 0 and (only is None or not only.get(st["effect"], False)):
-            continue
-        if only is not None and st["effect"] not in only:
+        # a later step of any effect (unexplained), or of an effect in `only` (explained; its first step too where
+        # `only` says so)
+        judged = i > 0 if only is None else st["effect"] in only and (i > 0 or only[st["effect"]])
+        if not judged:
             continue
         # what the final model loses without it (absent when it was not refitted without it)
         loss = ev.get("held_out_loss_without_it_noise_variances")
