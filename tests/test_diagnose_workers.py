@@ -362,3 +362,67 @@ def test_without_a_process_pool_the_fits_run_on_threads(monkeypatch):
     out = list(optimise_all(engine, [("a", {"delay": 0.02}), ("unsolvable", {}), ("b", {})], 2, processes=True))
     assert out[0] == "a" and out[2] == "b" and isinstance(out[1], np.linalg.LinAlgError)
     assert engine.n_evaluations == 3
+
+
+def _revised(workers, processes, kinds):
+    """The revision of a model holding `kinds` on the play core with a warming offset of
+    test_diagnose_revise_evidence, its refits `workers` side by side."""
+    from hystcomp.diagnose import revise as rv
+    from hystcomp.diagnose import search
+    from hystcomp.identify import parallel_fits
+    from hystcomp.identify.parts import PARTS
+    from hystcomp.identify.search import Structure
+    from test_diagnose_revise_evidence import _setup
+
+    rec, ctx, vp, _, _ = _setup()
+    st = Structure()
+    for kind in kinds:
+        part = PARTS[kind]()
+        part.prepare(rec.y, ctx)
+        st = st.extended(part)
+    start = {}
+    for p, q in st.parameters(ctx):
+        start.setdefault(p.kind, {})[q.name] = q.initial
+    cur = vp.evaluate(st, start)
+
+    def rms_val(pt):
+        return float(np.sqrt(np.mean((rec.y - pt.prediction)[~rec.train] ** 2)))
+
+    r = rms_val(cur)
+    effects = [PARTS[k].effect for k in kinds]
+    steps = [{"effect": e, "rms_before": (2.0 - 0.2 * i) * r, "evidence": {"acceptable": {k: 1.0}}}
+             for i, (e, k) in enumerate(zip(effects, kinds))]
+    said, sizes = [], []
+    real = parallel_fits.run_all
+
+    def spy(vp, tasks, workers=1):
+        if tasks:       # a step without alternatives asks for none
+            sizes.append(len(tasks))
+        return real(vp, tasks, workers, processes=processes)
+
+    rv.run_all = spy
+    try:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", DeprecationWarning)
+            _, pt, revisions = search._revise(vp, ctx, rec, st, cur, steps, effects, list(kinds),
+                                              [{k: r} for k in kinds], 0.05, rms_val, said.append, workers)
+    finally:
+        rv.run_all = real
+    return said, pt, revisions, steps, vp.n_evaluations, sizes
+
+
+@pytest.mark.parametrize("processes", _KINDS)
+def test_revision_refits_side_by_side_give_the_revision_of_one_thread(processes):
+    # the lag is dropped first (a later effect, the drift, holds the warming), the drift kept,
+    # then the envelopes dropped: the refits after a dropped part are made again from the
+    # model without it (3 refits from the first model, then 2 from the second)
+    kinds = ["output_lag", "offset_drift", "asymmetric_envelopes"]
+    one = _revised(1, None, kinds)
+    two = _revised(2, processes, kinds)
+    assert [s.split(":")[1].split()[-1] for s in one[0]] == ["dropped", "kept", "dropped"]
+    assert one[5] == two[5] == [3, 2]
+    assert one[0] == two[0]
+    assert one[1].rss == two[1].rss and np.array_equal(one[1].theta, two[1].theta)
+    assert one[2] == two[2] and one[3] == two[3]
+    # the refits' inner solves are counted alike (forked children's too)
+    assert one[4] == two[4]

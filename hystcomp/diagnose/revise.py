@@ -3,8 +3,9 @@ near ties and other forms of a chosen effect refitted in its place, then
 parts a later effect made redundant dropped (:func:`revise`, called by
 :mod:`hystcomp.diagnose.search` when two or more effects are named)."""
 
+from ..identify.parallel_fits import run_all
 from ..identify.parts import PARTS
-from ..identify.search import FIT_ERRORS, PartsModel, Structure
+from ..identify.search import PartsModel, Structure
 from .start_or_trend import start_or_trend_revised
 
 __all__ = ["TIE", "PARSIMONY", "SAME_EFFECT_FORMS", "n_parameters", "refit", "revise"]
@@ -42,7 +43,13 @@ def refit(vp, ctx, st, start, rms_val, new=None, starts=()):
     return pt
 
 
-def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say, *, min_gain):
+def _refit_task(ctx, st, start, rms_val, new=None, starts=()):
+    """:func:`refit` as a task of :func:`~hystcomp.identify.parallel_fits.run_all`."""
+    return lambda vp: refit(vp, ctx, st, start, rms_val, new, starts)
+
+
+def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say, *, min_gain,
+           workers=1):
     """Revisit the effects chosen greedily once all are in (a floating
     search): a part whose step was a near tie with another effect's part, or
     (for every step but the last) one of the ``SAME_EFFECT_FORMS`` other
@@ -50,7 +57,14 @@ def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, 
     that lowers the held-out RMS with the later effects in the model; then a
     part whose removal raises the held-out mean square by less than min_gain
     noise variances is dropped (a later effect made it redundant).  Returns
-    the structure, the fit point and the revisions."""
+    the structure, the fit point and the revisions.
+
+    With ``workers > 1`` the refits run side by side
+    (:func:`~hystcomp.identify.parallel_fits.run_all`): a step's
+    alternatives together, and the refits without each part from the same
+    model together (those after a part that is dropped are made again from
+    the model without it).  Each refit is the same computation, so the
+    revision is the same with any number of workers."""
     revisions = []
     s2 = sigma ** 2
     for j in range(len(chosen_kinds)):
@@ -73,6 +87,7 @@ def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, 
                           and (r, k) not in alts)
             alts += same[:SAME_EFFECT_FORMS]
         tried = [(kind, struct, cur)]
+        jobs = []
         for _, alt in alts:
             cls = PARTS[alt]
             if cls.slot == "output" and any(p.slot == "output" and p.kind != kind for p in struct.parts):
@@ -86,9 +101,11 @@ def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, 
             start[alt] = {q.name: q.initial for q in part.parameters(ctx, set(st.kinds))}
             for p, q in st.parameters(ctx):
                 start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
-            try:
-                pt = refit(vp, ctx, st, start, rms_val, part, [{alt: v} for v in part.initial_values(ctx, set(st.kinds))])
-            except FIT_ERRORS:
+            starts = [{alt: v} for v in part.initial_values(ctx, set(st.kinds))]
+            jobs.append((alt, st, _refit_task(ctx, st, start, rms_val, part, starts)))
+        # the alternatives' refits side by side (a fit's error leaves that alternative out)
+        for (alt, st, _), pt in zip(jobs, run_all(vp, [task for _, _, task in jobs], workers)):
+            if isinstance(pt, Exception):
                 continue
             say(f"revise: {kind} -> {alt}: held-out RMS {rms_val(cur):.4g} -> {rms_val(pt):.4g}")
             tried.append((alt, st, pt))
@@ -117,36 +134,44 @@ def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, 
             chosen[j], chosen_kinds[j] = cls.effect, alt
             struct, cur = st, pt
     # backward: drop what a later effect made redundant (`live`: the step of
-    # each chosen part; a dropped step stays in `steps`, marked)
+    # each chosen part; a dropped step stays in `steps`, marked).  The refits
+    # without each part from j on start from the same model and run side by
+    # side; once a part is dropped, those after it are made again from the
+    # model without it
     live = list(range(len(chosen_kinds)))
     j = 0
     while j < len(chosen_kinds) and len(chosen_kinds) > 1:
-        kind = chosen_kinds[j]
-        keep = [p for p in struct.parts if p.kind != kind]
-        st = Structure(keep)
-        start = {k: dict(v) for k, v in cur.values.items() if k != kind}
+        jobs = []
+        for kind in chosen_kinds[j:]:
+            st = Structure([p for p in struct.parts if p.kind != kind])
+            start = {k: dict(v) for k, v in cur.values.items() if k != kind}
+            jobs.append((st, _refit_task(ctx, st, start, rms_val)))
+        fits = run_all(vp, [task for _, task in jobs], workers)
         try:
-            pt = refit(vp, ctx, st, start, rms_val)
-        except FIT_ERRORS:
-            j += 1
-            continue
-        before, after = rms_val(cur), rms_val(pt)
-        # what the part still adds with every other effect in: the held-out mean
-        # square it saves, in noise variances (kept at min_gain or more)
-        steps[live[j]]["evidence"]["held_out_loss_without_it_noise_variances"] = round(
-            (after ** 2 - before ** 2) / s2, 3)
-        if after ** 2 - before ** 2 < min_gain * s2:
-            say(f"revise: {chosen[j]} ({kind}) dropped: without it the held-out RMS is {after:.4g} "
-                f"(with it {before:.4g})")
-            revisions.append({"step": live[j] + 1, "replaced": kind, "by": None, "effect_before": chosen[j],
-                              "effect_after": None, "rms_before": before, "rms_after": after,
-                              "reason": f"redundant once the later effects are in: it lowers the held-out mean "
-                                        f"square by less than {min_gain} noise variances"})
-            steps[live[j]]["evidence"]["revised"] = revisions[-1]
-            steps[live[j]]["dropped"] = True
-            del chosen[j], chosen_kinds[j], live[j]
-            struct, cur = st, pt
-        else:
-            say(f"revise: {chosen[j]} ({kind}) kept: without it {after:.4g} (with it {before:.4g})")
-            j += 1
+            for (st, _), pt in zip(jobs, fits):
+                kind = chosen_kinds[j]
+                if isinstance(pt, Exception):
+                    j += 1
+                    continue
+                before, after = rms_val(cur), rms_val(pt)
+                # what the part still adds with every other effect in: the held-out mean
+                # square it saves, in noise variances (kept at min_gain or more)
+                steps[live[j]]["evidence"]["held_out_loss_without_it_noise_variances"] = round(
+                    (after ** 2 - before ** 2) / s2, 3)
+                if after ** 2 - before ** 2 < min_gain * s2:
+                    say(f"revise: {chosen[j]} ({kind}) dropped: without it the held-out RMS is {after:.4g} "
+                        f"(with it {before:.4g})")
+                    revisions.append({"step": live[j] + 1, "replaced": kind, "by": None, "effect_before": chosen[j],
+                                      "effect_after": None, "rms_before": before, "rms_after": after,
+                                      "reason": f"redundant once the later effects are in: it lowers the held-out "
+                                                f"mean square by less than {min_gain} noise variances"})
+                    steps[live[j]]["evidence"]["revised"] = revisions[-1]
+                    steps[live[j]]["dropped"] = True
+                    del chosen[j], chosen_kinds[j], live[j]
+                    struct, cur = st, pt
+                    break
+                say(f"revise: {chosen[j]} ({kind}) kept: without it {after:.4g} (with it {before:.4g})")
+                j += 1
+        finally:
+            fits.close()
     return struct, cur, revisions

@@ -411,7 +411,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
             stopped = f"max_effects = {max_effects} reached"
     if len(chosen) >= 2:
         struct, cur, revisions = _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials,
-                                         sigma, rms_val, say)
+                                         sigma, rms_val, say, workers)
         if revisions:
             step_preds.append(cur.prediction)
     else:
@@ -708,7 +708,8 @@ def _pair_step(vp, ctx, trials, judged, ok, sigma, rms_val, cur, cur_val, excess
     return (ka, kb), pt, st
 
 
-def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say):
-    """:func:`.revise.revise` with this search's ``MIN_GAIN``."""
+def _revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say, workers=1):
+    """:func:`.revise.revise` with this search's ``MIN_GAIN`` (its refits
+    `workers` side by side: the same revision)."""
     return revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say,
-                  min_gain=MIN_GAIN)
+                  min_gain=MIN_GAIN, workers=workers)
