@@ -161,15 +161,16 @@ def run_all(vp, tasks, workers=1, processes=None):
 
     Examples
     --------
-    >>> import numpy as np
-    >>> from hystcomp.identify.parts import Context, Drift
-    >>> from hystcomp.identify.search import Structure, VariableProjection
-    >>> t = np.linspace(0.0, 10.0, 500); v = np.sin(t)
-    >>> vp = VariableProjection(Context(v, 0.02, 0.0, 1.0, 10.0, n_thresholds=6), 2 * v, t < 7)
-    >>> tasks = [lambda vp: vp.evaluate(Structure(), {}),
-    ...          lambda vp: vp.evaluate(Structure([Drift()]), {"offset_drift": {"time_constant": 3.0}})]
-    >>> [round(pt.rss, 6) for pt in run_all(vp, tasks, workers=2)]
-    [0.0, 0.0]
+    A stand-in engine whose one "fit" doubles a number and counts a solve:
+
+    >>> class Doubler:
+    ...     n_evaluations = 0
+    ...     def fit(self, x):
+    ...         self.n_evaluations += 1
+    ...         return 2 * x
+    >>> engine = Doubler()
+    >>> list(run_all(engine, [lambda e: e.fit(1), lambda e: e.fit(5)], workers=2)), engine.n_evaluations
+    ([2, 10], 2)
     """
     if processes and not _platform_forks():
         raise ValueError(f"Parameter processes is {processes!r} but this platform ({sys.platform}) cannot fork; "
