@@ -175,6 +175,16 @@ anhysteretic tanh of its play's output), the travel the 90 deg rotation's quadra
 maker's way (the sleeve slid on, then the prestress, which carries the magnetisation toward the anhysteretic) before
 every record but the initial-state cases', read by an eddy-current probe; a PI model of 12 plays fitted by NNLS leaves
 1.2 ... 2.1 sigma RMS on its clean record (at most 11.4 ... 13.4 sigma), measured in tests/test_realistic_holdout45.py.
+:data:`HOLDOUT46` (``cases_holdout46.py``) was written after HOLDOUT45 was measured, by a session that did not read how
+the diagnosis decides, to be run once for the next round's measurement; kept out of :data:`ALL` until then.
+Its core is a polypyrrole (PPy(DBS)) film on a gold-coated polyimide strip, a bilayer bender under a potentiostat, read
+by a laser triangulation sensor: the film's domains each a Frumkin lattice gas of redox sites with attractive
+interactions (g > 2: bistable, switching at its spinodals, E_i +- Delta(g); Laviron 1974, Dreyer et al. 2010), 600
+classes on a golden-ratio lattice over normal formal potentials and log-normal interactions, a double layer beside
+them, the curvature Stoney's limit of Timoshenko's bimetal formula, starting from the film as grown at the middle
+potential (every domain in its stable state: the Preisach demagnetised state); a PI model of 12 plays fitted by NNLS
+leaves 1.11 ... 1.79 sigma RMS on its clean record (at most 4.4 ... 5.7 sigma), measured in
+tests/test_realistic_holdout46.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -224,6 +234,7 @@ from .cases_holdout42 import HOLDOUT42  # noqa: F401
 from .cases_holdout43 import HOLDOUT43  # noqa: F401
 from .cases_holdout44 import HOLDOUT44  # noqa: F401
 from .cases_holdout45 import HOLDOUT45  # noqa: F401
+from .cases_holdout46 import HOLDOUT46  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -238,4 +249,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT19", "HOLDOUT20", "HOLDOUT21", "HOLDOUT22", "HOLDOUT23", "HOLDOUT24", "HOLDOUT25", "HOLDOUT26",
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
-           "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "ALL"]
+           "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "HOLDOUT46", "ALL"]
