@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; SLOWTIME in round 48, 485, with HOLDOUT46's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-45 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-46 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,11 +49,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1121/1425 (78.7 %) over the forty-six sets in round 47
-# (the forty-five earlier sets 1113/1395 with round 47's rule on small saturations and later asymmetries of explained
-# records, 1094 before; HOLDOUT45 8/30 when fresh and as committed: a prestressed Terfenol-D rod whose magnetisation
-# saturates), so it stays open.
-# At seed 0, as run here, 382/475 (80.4 %), 427.5 needed, so
+# The issue's criterion is over three seeds: 1143/1455 (78.6 %) over the forty-seven sets in round 48
+# (the forty-six earlier sets 1121/1425 as in round 47: round 48 changed no decision; HOLDOUT46 22/30 when fresh and
+# as committed: a polypyrrole bilayer bender whose domains are Frumkin lattice gases), so it stays open.
+# At seed 0, as run here, 389/485 (80.2 %), 436.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -64,22 +63,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44) and 8/30 (HOLDOUT45)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45) and 22/30 (HOLDOUT46)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1121/1425 right over three seeds of the forty-six sets "
-                                         "(78.7 %); at seed 0 382/475 (80.4 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1143/1455 right over three seeds of the forty-seven sets "
+                                         "(78.6 %); at seed 0 389/485 (80.2 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 382/475 right at seed 0 in round 47 (80.4 %; 371/465 in round 46); at least 372, ten runs of
+    # regression guard: 389/485 right at seed 0 in round 48 (80.2 %; 382/475 in round 47); at least 379, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 475
-    assert right >= 372, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 485
+    assert right >= 379, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -125,11 +124,15 @@ NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
 #: variances on an `explained` record is tentative, not named: HOLDOUT36's at seed 0 (0.52) and HOLDOUT40's (0.63-1.22)
 #: are. HOLDOUT45's prestressed Terfenol-D rod (every region magnetised as a tanh of a play, the travel its square),
 #: fresh in round 47: a saturation of 6.4 noise variances named at seed 2, `explained` at 1.07; at seeds 0 and 1 the
-#: saturation held tentative (2.01 and 0.62)
+#: saturation held tentative (2.01 and 0.62). HOLDOUT46's polypyrrole bilayer bender (Frumkin domains that switch
+#: at their spinodals: the film's oxidation, and so its strain, saturates once every domain has switched; a 12-play
+#: PI fit leaves 1.1-1.8 sigma), fresh in round 48: `unexplained` with nothing named at seed 0 (1.74 true noise
+#: levels), `explained` at seed 1 (1.38), a saturation named at seed 2 (`unexplained` at 1.76)
 SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
                     "holdout36_clean_servo_torque_motor_sleep_spindles_1455hz",
                     "holdout40_clean_depoled_pzt_grain_switching_windscreen_wiper_1385hz",
-                    "holdout45_clean_terfenol_rod_pinball_flippers_1213hz")
+                    "holdout45_clean_terfenol_rod_pinball_flippers_1213hz",
+                    "holdout46_clean_ppy_bilayer_barber_strop_1237hz")
 
 
 def _named_on_clean(rows):
@@ -151,8 +154,8 @@ def test_no_effect_named_on_clean_records(rows):
     # HOLDOUT39's critical-state rod and HOLDOUT42's shape-memory wire are not PI models:
     # nothing may be named on them, but they may be left unexplained (tests/test_diagnose_realistic_sample.py,
     # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads,
-    # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT and HOLDOUT45's Terfenol-D rod may get a saturation and
-    # nothing else (SATURATING_CLEAN)
+    # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT, HOLDOUT45's Terfenol-D rod and HOLDOUT46's polypyrrole
+    # bender may get a saturation and nothing else, and may be left unexplained (SATURATING_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
@@ -160,7 +163,8 @@ def test_no_effect_named_on_clean_records(rows):
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
                                         "on HOLDOUT41's pinned-wall ferrite ring at seed 2, on HOLDOUT45's "
-                                        "Terfenol-D rod at seed 2 and on HOLDOUT42's shape-memory wire at seed 2 "
+                                        "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
+                                        "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(with an asymmetry); an asymmetry on HOLDOUT43's electrowetting drop at "
                                         "seed 1 (since round 47 the small saturations of HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
@@ -185,8 +189,13 @@ def _over(rows):
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
 # most 1.6; the high-frequency estimate was within 0.4 % of the true noise). The issue's own wording,
-# within 1.5x the noise floor, holds for it.
-OVER_KNOWN = {"holdout34_initial_state_estop_swept_sine_slow_waltz_968hz": 1.6}
+# within 1.5x the noise floor, holds for it. HOLDOUT46's polypyrrole bender read by a laser sensor that samples and
+# holds late (round 48, fresh), at seed 0, is `explained` (a dead time and an asymmetry named) at 1.48 estimated noise
+# floors, within its bound of 1.48, but its floor from the residual's high-frequency part, 0.309, is 9 % above the
+# true noise, 0.283 (the sensor's hold leaves fast structure beside the noise; the scatter over its 35 holds, 0.288,
+# is within 1.5 %): 1.61 true noise levels (OVER_KNOWN, at most 1.7).
+OVER_KNOWN = {"holdout34_initial_state_estop_swept_sine_slow_waltz_968hz": 1.6,
+              "holdout46_delay_laser_sensor_latency_hi_hat_587hz": 1.7}
 
 
 def test_explained_means_within_the_noise(rows):
@@ -201,14 +210,15 @@ def test_explained_means_within_the_noise(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: HOLDOUT34's stage after an emergency stop is explained at "
-                                         "1.53 true noise levels at seed 0 (its floor 4.5 % high)")
+                                         "1.53 true noise levels at seed 0 (its floor 4.5 % high), HOLDOUT46's "
+                                         "bender behind a sampling laser sensor at 1.61 (its floor 9 % high)")
 def test_every_explained_verdict_within_the_true_noise(rows):
     over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
 
 
 @pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 106/156 runs (35/52 at seed 0) of the combined "
-                                        "cases of the forty-six sets (creep under a clip, an initial state "
+                                        "cases of the forty-seven sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -238,7 +248,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "HOLDOUT42's integrating converter's delay behind an isolation amplifier's "
                                         "limiter read as a rate dependence beside the limiter's saturation at all three seeds, "
                                         "with an asymmetry at seed 0, HOLDOUT44's replacement muscle's "
-                                        "asymmetry missed beside an AMR sensor's saturation at seed 0)")
+                                        "asymmetry missed beside an AMR sensor's saturation at seed 0; HOLDOUT46's "
+                                        "pair, a drift and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
