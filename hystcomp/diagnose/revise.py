@@ -43,9 +43,14 @@ def refit(vp, ctx, st, start, rms_val, new=None, starts=()):
     return pt
 
 
-def _refit_task(ctx, st, start, rms_val, new=None, starts=()):
-    """:func:`refit` as a task of :func:`~hystcomp.identify.parallel_fits.run_all`."""
-    return lambda vp: refit(vp, ctx, st, start, rms_val, new, starts)
+def _refit_task(ctx, st, start, rms_val, new=None):
+    """:func:`refit` as a task of :func:`~hystcomp.identify.parallel_fits.run_all`; the `new`
+    part's starting points are taken in the task, so that an error there (a fit's error) leaves
+    the alternative out, as an error of the fit does."""
+    def task(vp):
+        starts = () if new is None else [{new.kind: v} for v in new.initial_values(ctx, set(st.kinds))]
+        return refit(vp, ctx, st, start, rms_val, new, starts)
+    return task
 
 
 def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, sigma, rms_val, say, *, min_gain,
@@ -101,8 +106,7 @@ def revise(vp, ctx, rec, struct, cur, steps, chosen, chosen_kinds, step_trials, 
             start[alt] = {q.name: q.initial for q in part.parameters(ctx, set(st.kinds))}
             for p, q in st.parameters(ctx):
                 start.setdefault(p.kind, {}).setdefault(q.name, q.initial)
-            starts = [{alt: v} for v in part.initial_values(ctx, set(st.kinds))]
-            jobs.append((alt, st, _refit_task(ctx, st, start, rms_val, part, starts)))
+            jobs.append((alt, st, _refit_task(ctx, st, start, rms_val, part)))
         # the alternatives' refits side by side (a fit's error leaves that alternative out)
         for (alt, st, _), pt in zip(jobs, run_all(vp, [task for _, _, task in jobs], workers)):
             if isinstance(pt, Exception):
