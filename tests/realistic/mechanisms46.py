@@ -116,6 +116,30 @@ def core_domains(core):
 
 
 @njit(cache=True)
+def _bracketed_root(x, g, lo, hi, z, rising):
+    """The logit z of a root of F(z) = z + g (1 - 2 theta) - x in [lo, hi], where F rises (`rising`, a stable branch)
+    or falls (the unstable middle): Newton's method from z, kept inside the bracket (bisection when a step leaves it).
+    Where the bracket holds no root, the end it closes on."""
+    for _ in range(200):
+        sg = 1.0 / (1.0 + math.exp(-z))
+        F = z + g * (1.0 - 2.0 * sg) - x
+        if abs(F) <= 4e-16 * (abs(z) + g + abs(x)):
+            return z
+        if (F > 0) == rising:
+            hi = z
+        else:
+            lo = z
+        dF = 1.0 - 2.0 * g * sg * (1.0 - sg)
+        zn = z - F / dF if (dF > 0.0 if rising else dF < 0.0) else 0.5 * (lo + hi)
+        if not (lo <= zn <= hi) or zn == z:
+            zn = 0.5 * (lo + hi)
+            if zn == lo or zn == hi:
+                return z
+        z = zn
+    return z
+
+
+@njit(cache=True)
 def _branch_root(x, g, branch, z0):
     """The logit z = ln(theta / (1 - theta)) of the root of z + g (1 - 2 theta) = x on the branch (0 the reduced, below
     theta_-; 1 the oxidised, above theta_+): Newton's method from z0, kept inside a bracket (bisection when a step
@@ -126,24 +150,7 @@ def _branch_root(x, g, branch, z0):
         lo, hi = x - g, zs
     else:
         lo, hi = -zs, x + g
-    z = min(max(z0, lo), hi)
-    for _ in range(200):
-        sg = 1.0 / (1.0 + math.exp(-z))
-        F = z + g * (1.0 - 2.0 * sg) - x
-        if abs(F) <= 4e-16 * (abs(z) + g + abs(x)):
-            return z
-        if F > 0:
-            hi = z
-        else:
-            lo = z
-        dF = 1.0 - 2.0 * g * sg * (1.0 - sg)
-        zn = z - F / dF if dF > 0.0 else 0.5 * (lo + hi)
-        if not (lo <= zn <= hi) or zn == z:
-            zn = 0.5 * (lo + hi)
-            if zn == lo or zn == hi:
-                return z
-        z = zn
-    return z
+    return _bracketed_root(x, g, lo, hi, min(max(z0, lo), hi), True)
 
 
 @njit(cache=True)
@@ -246,25 +253,7 @@ def _mid_root(x, g):
     bracket)."""
     s = math.sqrt(1.0 - 2.0 / g)
     zs = math.log((1.0 - s) / (1.0 + s))
-    lo, hi = zs, -zs
-    z = 0.5 * (lo + hi)
-    for _ in range(200):
-        sg = 1.0 / (1.0 + math.exp(-z))
-        F = z + g * (1.0 - 2.0 * sg) - x
-        if abs(F) <= 4e-16 * (abs(z) + g + abs(x)):
-            return z
-        if F > 0:
-            lo = z
-        else:
-            hi = z
-        dF = 1.0 - 2.0 * g * sg * (1.0 - sg)
-        zn = z - F / dF if dF < 0.0 else 0.5 * (lo + hi)
-        if not (lo <= zn <= hi) or zn == z:
-            zn = 0.5 * (lo + hi)
-            if zn == lo or zn == hi:
-                return z
-        z = zn
-    return z
+    return _bracketed_root(x, g, zs, -zs, 0.0, False)      # from the bracket's middle
 
 
 @njit(cache=True)
