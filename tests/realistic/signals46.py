@@ -40,6 +40,19 @@ def _side(rng):
     return 1.0 if rng.uniform() < 0.5 else -1.0
 
 
+def _end_to_end(p, rng, n_bursts, count, move, dwell):
+    """`n_bursts` bursts of moves to 0.8 ... 1 of the reach, alternately to either side (the first side drawn), a number
+    in the range `count` of them, each taking a time drawn from `move` and held for one drawn from `dwell`; after each
+    burst, back to the middle (0.3 ... 0.5 s) and held there (1 ... 2 s). Appended to the programme `p`."""
+    for _ in range(n_bursts):
+        sd = _side(rng)
+        for k in range(int(rng.integers(*count))):
+            p.to(rng.uniform(*move), (sd if k % 2 == 0 else -sd) * rng.uniform(0.8, 1.0))
+            p.hold(rng.uniform(*dwell))
+        p.to(rng.uniform(0.3, 0.5), 0.0)
+        p.hold(rng.uniform(1.0, 2.0))
+
+
 # ---- a barber stropping a razor (the clean case) ----
 
 def barber_strop(rng, n_razors):
@@ -49,13 +62,7 @@ def barber_strop(rng, n_razors):
     s). Returns the knots and the end."""
     p = _Prog()
     p.hold(rng.uniform(0.5, 1.0))
-    for _ in range(n_razors):
-        sd = _side(rng)
-        for k in range(int(rng.integers(8, 15))):
-            p.to(rng.uniform(0.35, 0.7), (sd if k % 2 == 0 else -sd) * rng.uniform(0.8, 1.0))
-            p.hold(rng.uniform(0.08, 0.2))
-        p.to(rng.uniform(0.3, 0.5), 0.0)
-        p.hold(rng.uniform(1.0, 2.0))
+    _end_to_end(p, rng, n_razors, (8, 15), (0.35, 0.7), (0.08, 0.2))
     return p.kn, p.t
 
 
@@ -238,13 +245,7 @@ def tightrope(rng, n_gusts):
             p.to(rng.uniform(0.2, 0.4), _side(rng) * rng.uniform(0.01, 0.03))
         p.to(0.25, 0.0)
         p.hold(rng.uniform(0.5, 1.0))
-    for _ in range(n_gusts):
-        sd = _side(rng)
-        for k in range(int(rng.integers(3, 7))):
-            p.to(rng.uniform(0.3, 0.6), (sd if k % 2 == 0 else -sd) * rng.uniform(0.8, 1.0))
-            p.hold(rng.uniform(0.1, 0.4))
-        p.to(rng.uniform(0.3, 0.5), 0.0)
-        p.hold(rng.uniform(1.0, 2.0))
+    _end_to_end(p, rng, n_gusts, (3, 7), (0.3, 0.6), (0.1, 0.4))
     return p.kn, p.t
 
 
