@@ -77,6 +77,35 @@ def test_units_on_the_axes(drift_csv, capsys):
     assert status == 2 and "--units" in err and "Traceback" not in err
 
 
+def test_the_figures_name_the_columns(drift_csv, capsys, tmp_path, monkeypatch):
+    """From the CLI the axes carry the CSV's column names, with units only when --units gives them (not the
+    placeholders "input units", "output units")."""
+    from hystcomp.diagnose.report import Diagnosis
+
+    seen = []
+    plots = Diagnosis.plots
+
+    def recording(self, *args, **kwargs):
+        figs = plots(self, *args, **kwargs)
+        seen.append([a.get_xlabel() + " | " + a.get_ylabel() for f in figs.values() for a in f.axes])
+        return figs
+
+    monkeypatch.setattr(Diagnosis, "plots", recording)
+    common = [drift_csv, "--time", "time", "--input", "volts", "--output", "um", "--quiet"]
+    assert _run(common + ["--plots", str(tmp_path / "a")], capsys)[0] == 0
+    assert _run(common + ["--plots", str(tmp_path / "b"), "--units", "V,um"], capsys)[0] == 0
+    bare, with_units = seen
+    assert any(lab.startswith("volts | um") for lab in bare)              # the loops: output against input
+    assert any(lab.startswith("volts | residual") for lab in bare)
+    assert any("rate of volts [per s]" in lab for lab in bare)
+    assert not any("units" in lab or "input v" in lab for lab in bare)
+    assert any(lab.startswith("volts [V] | um [um]") for lab in with_units)
+    assert any("rate of volts [V/s]" in lab and "residual [um]" in lab for lab in with_units)
+    # a bad name is refused naming the argument
+    with pytest.raises(TypeError, match="input_name"):
+        plots(Diagnosis.__new__(Diagnosis), input_name="")
+
+
 def test_summary_text_and_none(tmp_path, capsys):
     d = hidden_effect_data(None, seed=3, dt=0.0125)
     p = _write(tmp_path / "plain.csv", ["t", "v", "y"], zip(d.t, d.v, d.y))

@@ -290,8 +290,9 @@ def add_arguments(parser):
     parser.add_argument("--output", default="y", help="measured output column (default y)")
     parser.add_argument("--json", action="store_true", help="print one JSON object to stdout")
     parser.add_argument("--plots", metavar="DIR", help="write the diagnosis figures (PNG) into DIR")
-    parser.add_argument("--units", metavar="IN,OUT", default="input units,output units",
-                        help="units of the input and output columns for the figures' axes, e.g. V,um")
+    parser.add_argument("--units", metavar="IN,OUT", default=None,
+                        help="units of the input and output columns for the figures' axes, e.g. V,um (default "
+                             "none: the axes carry the columns' names alone)")
     parser.add_argument("--validation", type=float, default=0.3, help="held-out fraction (default 0.3)")
     parser.add_argument("--held-out", choices=("auto", "last", "blocks"), default="auto",
                         help="which part is held out: the end (last); five blocks spread over the record "
@@ -331,10 +332,17 @@ def run(args):
     jobs = getattr(args, "jobs", None)
     if jobs is not None and jobs < 1:
         return _fail(f"error: --jobs is {jobs} but should be >= 1")
-    units = str(getattr(args, "units", "input units,output units")).split(",")
-    if len(units) != 2 or not all(u.strip() for u in units):
-        return _fail(f"error: --units is {args.units!r} but should be two units separated by a comma, e.g. V,um")
-    units = [u.strip() for u in units]
+    units = getattr(args, "units", None)
+    if units is not None:
+        units = str(units).split(",")
+        if len(units) != 2 or not all(u.strip() for u in units):
+            return _fail(f"error: --units is {args.units!r} but should be two units separated by a comma, e.g. V,um")
+        units = [u.strip() for u in units]
+    else:
+        units = [None, None]
+    # the figures' axes name the columns as the file does (the default columns v and y as "input v", "output y")
+    names = dict(input_name="input v" if args.input == "v" else args.input,
+                 output_name="output y" if args.output == "y" else args.output)
     records = []
     for path in files:
         try:
@@ -374,7 +382,7 @@ def run(args):
             for path, rep in zip(files, reps):
                 folder = args.plots if len(files) == 1 else os.path.join(
                     args.plots, os.path.splitext(os.path.basename(path))[0])
-                for p in rep.save_plots(folder, *units):
+                for p in rep.save_plots(folder, *units, **names):
                     print(f"wrote {p}", file=sys.stderr)
     except Exception as exc:
         return _fail(f"error: cannot write the figures to {args.plots} ({type(exc).__name__}: {exc})")

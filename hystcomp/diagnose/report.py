@@ -546,7 +546,8 @@ class Diagnosis:
                 f"rms_before={self.rms_before:.4g}, rms_after={self.rms_after:.4g})")
 
     # -- figures
-    def plots(self, input_unit="input units", output_unit="output units"):
+    def plots(self, input_unit="input units", output_unit="output units", *, input_name="input v",
+              output_name="output y"):
         """Figures: ``signatures`` (the base residual in time, against the
         input and against the rate, the noise floor drawn; the rate axis
         holds the middle 99.8 % of the samples when a step in the input
@@ -558,9 +559,13 @@ class Diagnosis:
 
         Parameters
         ----------
-        input_unit, output_unit : str
-            Units of the input and output written on the axes (e.g. ``"V"``,
-            ``"um"``); the record itself carries none.
+        input_unit, output_unit : str or None
+            Units of the input and output written on the axes in brackets
+            (e.g. ``"V"``, ``"um"``); the record itself carries none. None
+            writes no unit.
+        input_name, output_name : str
+            What the input and output are called on the axes (e.g. the CSV's
+            column names ``"drive_V"``, ``"deflection_um"``).
 
         Returns
         -------
@@ -569,9 +574,15 @@ class Diagnosis:
         from ..plotting import new_figure
 
         for name, unit in (("input_unit", input_unit), ("output_unit", output_unit)):
-            if not isinstance(unit, str):
-                raise TypeError(f"Parameter {name} is {unit!r} but should be a string such as 'V'")
-        iu, ou = input_unit, output_unit
+            if unit is not None and not isinstance(unit, str):
+                raise TypeError(f"Parameter {name} is {unit!r} but should be a string such as 'V' or None")
+        for name, label in (("input_name", input_name), ("output_name", output_name)):
+            if not isinstance(label, str) or not label.strip():
+                raise TypeError(f"Parameter {name} is {label!r} but should be a non-empty string such as 'drive_V'")
+        x_in, y_out = _axis(input_name, input_unit), _axis(output_name, output_unit)
+        y_res = _axis("residual", output_unit)
+        x_rate = _axis("input rate dv/dt" if input_name == "input v" else f"rate of {input_name}",
+                       f"{input_unit}/s" if input_unit else "per s")
         rec = self._rec
         s = self.noise_floor
         xax = rec.t if rec.t is not None else np.arange(rec.n)
@@ -588,13 +599,13 @@ class Diagnosis:
         for k, j, _ in rec.holds:
             ax[0].axvspan(xax[k], xax[j - 1], color="0.85", zorder=0)
         _mark_held_out(ax[0], xax, rec)
-        ax[0].set(xlabel=xlabel + " (grey: holds; dashed, orange: held-out part)", ylabel=f"residual [{ou}]",
+        ax[0].set(xlabel=xlabel + " (grey: holds; dashed, orange: held-out part)", ylabel=y_res,
                   title="in time (drift, creep, initial state)")
         ax[0].legend(fontsize=7, loc="best", framealpha=0.6)
         up = rec.direction[idx] >= 0
         ax[1].plot(rec.v[idx][up], e0[idx][up], ".", ms=1.5, label="rising")
         ax[1].plot(rec.v[idx][~up], e0[idx][~up], ".", ms=1.5, label="falling")
-        ax[1].set(xlabel=f"input v [{iu}]", ylabel=f"residual [{ou}]",
+        ax[1].set(xlabel=x_in, ylabel=y_res,
                   title="against input (asymmetry, saturation)")
         ax[1].legend(fontsize=7, loc="best", framealpha=0.6)
         if rec.dt is not None:
@@ -606,11 +617,11 @@ class Diagnosis:
                 # other samples into one column: the axis keeps 99.8 % of them
                 ax[2].set_xlim(lo, hi)
                 note = f"; {beyond} samples beyond the axis"
-            ax[2].set(xlabel=f"input rate dv/dt [{iu}/s]{note}", ylabel=f"residual [{ou}]",
+            ax[2].set(xlabel=x_rate + note, ylabel=y_res,
                       title="against rate (rate dependence, delay)")
         else:
             ax[2].text(0.5, 0.5, "no time axis: rate untested", ha="center", transform=ax[2].transAxes)
-            ax[2].set(xlabel="-", ylabel=f"residual [{ou}]", title="against rate")
+            ax[2].set(xlabel="-", ylabel=y_res, title="against rate")
         ax[3].axis("off")
         txt = "\n".join(f"{k}: {v['statistic']:.2f} (threshold {v['threshold']:.2f})"
                         + ("  PRESENT" if v["present"] else "") + ("" if v["testable"] else "  untested")
@@ -636,7 +647,7 @@ class Diagnosis:
             a.plot(rec.v[sel], rec.measured[sel], ".", color="0.5", ms=1.5, label="measured")
             a.plot(rec.v[sel], rec.output_sign * (pred[sel] + rec.y_offset), ".", ms=1.5, label=name)
             rms = float(np.sqrt(np.mean((rec.y - pred)[val] ** 2)))
-            a.set(xlabel=f"input v [{iu}]", ylabel=f"output y [{ou}]",
+            a.set(xlabel=x_in, ylabel=y_out,
                   title=f"held-out loops{note}, {name}: RMS {rms:.3g}")
             a.legend(fontsize=8, loc="upper left", markerscale=4)
         fig.suptitle("Loops on the held-out part: " + self._final_name())
@@ -703,7 +714,7 @@ class Diagnosis:
             a.axhline(-1.5 * s, color="C2", ls=":", lw=0.8)
             _mark_held_out(a, xax, rec)
             a.set_ylim(-ylim, ylim)
-            a.set_ylabel(f"residual [{ou}]")
+            a.set_ylabel(y_res)
             a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
         ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed, orange: held-out part)")
         title = f"verdict: {self.verdict}; stopped: {self.stopped}"
@@ -712,7 +723,8 @@ class Diagnosis:
         out["gap"] = fig
         return out
 
-    def save_plots(self, folder, input_unit="input units", output_unit="output units"):
+    def save_plots(self, folder, input_unit="input units", output_unit="output units", *, input_name="input v",
+                   output_name="output y"):
         """Write the figures of :meth:`plots` as PNG files; returns their paths.
 
         Parameters
@@ -720,8 +732,10 @@ class Diagnosis:
         folder : str or path-like
             Directory for ``diagnose_signatures.png``, ``diagnose_loops.png``
             and ``diagnose_gap.png`` (created if missing).
-        input_unit, output_unit : str
+        input_unit, output_unit : str or None
             Units written on the axes (see :meth:`plots`).
+        input_name, output_name : str
+            Names of the input and output on the axes (see :meth:`plots`).
 
         Returns
         -------
@@ -732,9 +746,15 @@ class Diagnosis:
 
         os.makedirs(folder, exist_ok=True)
         paths = []
-        for name, fig in self.plots(input_unit, output_unit).items():
+        for name, fig in self.plots(input_unit, output_unit, input_name=input_name,
+                                          output_name=output_name).items():
             p = os.path.join(folder, f"diagnose_{name}.png")
             fig.savefig(p, dpi=90)
             plt.close(fig)
             paths.append(p)
         return paths
+
+
+def _axis(name, unit):
+    """An axis label: the quantity's name and its unit in brackets (none when `unit` is None)."""
+    return f"{name} [{unit}]" if unit else name
