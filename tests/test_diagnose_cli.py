@@ -68,11 +68,20 @@ def test_units_on_the_axes(drift_csv, capsys):
     from hystcomp.diagnose import diagnose
 
     d = hidden_effect_data("drift", seed=2, dt=0.0125)
-    figs = diagnose(d.t, d.v, d.y, effects=["drift"], progress=False).plots(input_unit="V", output_unit="um")
+    rep = diagnose(d.t, d.v, d.y, effects=["drift"], progress=False)
+    figs = rep.plots(input_unit="V", output_unit="um")
     labels = [a.get_xlabel() + " | " + a.get_ylabel() for f in figs.values() for a in f.axes]
     assert any("input v [V]" in lab and "residual [um]" in lab for lab in labels)
     assert any("dv/dt [V/s]" in lab for lab in labels) and any("output y [um]" in lab for lab in labels)
     assert not any("units]" in lab for lab in labels)
+    # the signatures panel says why a test under its threshold is present (its pair's test read the misfit)
+    text = figs["signatures"].axes[3].texts[0].get_text()
+    for name, ev in rep.first_evidence.items():
+        line = next(li for li in text.splitlines() if li.startswith(name + ":"))
+        assert ("PRESENT" in line) == ev["present"]
+        if ev["present"] and ev["statistic"] <= ev["threshold"]:
+            assert line.endswith("'s test)") and "PRESENT (by " in line, line
+    assert any("PRESENT (by rate_dependence's test)" in li for li in text.splitlines())   # delay here: 0.46 < 0.5
     status, out, err = _run([drift_csv, "--units", "V", "--quiet"], capsys)
     assert status == 2 and "--units" in err and "Traceback" not in err
 

@@ -623,8 +623,7 @@ class Diagnosis:
             ax[2].text(0.5, 0.5, "no time axis: rate untested", ha="center", transform=ax[2].transAxes)
             ax[2].set(xlabel="-", ylabel=y_res, title="against rate")
         ax[3].axis("off")
-        txt = "\n".join(f"{k}: {v['statistic']:.2f} (threshold {v['threshold']:.2f})"
-                        + ("  PRESENT" if v["present"] else "") + ("" if v["testable"] else "  untested")
+        txt = "\n".join(f"{k}: {v['statistic']:.2f} (threshold {v['threshold']:.2f})" + _mark(k, v)
                         for k, v in self.first_evidence.items())
         ax[3].text(0, 1, "Signatures of the base residual (in noise floors)\n\n" + txt, va="top", fontsize=8,
                    family="monospace")
@@ -758,3 +757,19 @@ class Diagnosis:
 def _axis(name, unit):
     """An axis label: the quantity's name and its unit in brackets (none when `unit` is None)."""
     return f"{name} [{unit}]" if unit else name
+
+
+#: the two tests that read one misfit (a dead time and a lag; :func:`~hystcomp.diagnose.signatures.evidence`)
+_PAIRED_TEST = {"delay": "rate_dependence", "rate_dependence": "delay"}
+
+
+def _mark(name, ev):
+    """What the signatures panel writes after a test's statistic: PRESENT, and why when the
+    statistic alone does not say it (present through its pair's test; over its threshold but
+    not counted, see the evidence's reading), or untested."""
+    if not ev["testable"]:
+        return "  untested"
+    over = ev["statistic"] > ev["threshold"]
+    if ev["present"]:
+        return "  PRESENT" if over or name not in _PAIRED_TEST else f"  PRESENT (by {_PAIRED_TEST[name]}'s test)"
+    return "  (not counted: see its reading)" if over else ""
