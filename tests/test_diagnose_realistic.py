@@ -1,10 +1,10 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's; 35 min 50 s in round 49, 485, before HOLDOUT47 joined, while its measurement and its laws' tests shared the cores): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-46 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-47 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,10 +49,11 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1143/1455 (78.6 %) over the forty-seven sets in round 48
-# (the forty-six earlier sets 1121/1425 as in round 47: round 48 changed no decision; HOLDOUT46 22/30 when fresh and
-# as committed: a polypyrrole bilayer bender whose domains are Frumkin lattice gases), so it stays open.
-# At seed 0, as run here, 389/485 (80.2 %), 436.5 needed, so
+# The issue's criterion is over three seeds: 1176/1485 (79.2 %) over the forty-eight sets in round 49
+# (the forty-seven earlier sets 1157/1455 with round 49's rule on later saturations and asymmetries of records left
+# unexplained, 1143/1455 before it; HOLDOUT47 19/30 when fresh and as committed: a polarised pair of
+# magnetorheological clutches), so it stays open.
+# At seed 0, as run here, 399/495 (80.6 %), 445.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -63,22 +64,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45) and 22/30 (HOLDOUT46)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46) and 19/30 (HOLDOUT47)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1143/1455 right over three seeds of the forty-seven sets "
-                                         "(78.6 %); at seed 0 389/485 (80.2 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1176/1485 right over three seeds of the forty-eight sets "
+                                         "(79.2 %); at seed 0 399/495 (80.6 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 389/485 right at seed 0 in round 48 (80.2 %; 382/475 in round 47); at least 379, ten runs of
+    # regression guard: 399/495 right at seed 0 in round 49 (80.6 %; 389/485 in round 48); at least 389, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 485
-    assert right >= 379, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 495
+    assert right >= 389, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: clean records whose core is not a PI model: HOLDOUT32's stage on a guide with Dahl friction,
@@ -165,7 +166,7 @@ def test_no_effect_named_on_clean_records(rows):
                                         "on HOLDOUT41's pinned-wall ferrite ring at seed 2, on HOLDOUT45's "
                                         "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
-                                        "(with an asymmetry); an asymmetry on HOLDOUT43's electrowetting drop at "
+                                        "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting drop at "
                                         "seed 1 (since round 47 the small saturations of HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
@@ -184,7 +185,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46) or HOLDOUT45 (round 47). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47) or HOLDOUT47 (round 49). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -217,8 +218,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 106/156 runs (35/52 at seed 0) of the combined "
-                                        "cases of the forty-seven sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 100/159 runs (32/53 at seed 0) of the combined "
+                                        "cases of the forty-eight sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -248,8 +249,14 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "HOLDOUT42's integrating converter's delay behind an isolation amplifier's "
                                         "limiter read as a rate dependence beside the limiter's saturation at all three seeds, "
                                         "with an asymmetry at seed 0, HOLDOUT44's replacement muscle's "
-                                        "asymmetry missed beside an AMR sensor's saturation at seed 0; HOLDOUT46's "
-                                        "pair, a drift and a gain drift, is of one family and not among them)")
+                                        "asymmetry missed beside an AMR sensor's saturation at seed 0 and tentative "
+                                        "at seed 2, HOLDOUT47's fieldbus delay beside a rubber spring's creep read "
+                                        "as a lag at seeds 1 and 2; since round 49 a later saturation or asymmetry "
+                                        "of a record left unexplained needs 60 noise variances: the tuning set's "
+                                        "asymmetric Preisach core's asymmetry at all three seeds and the "
+                                        "saturations of HOLDOUT16's, HOLDOUT28's and HOLDOUT41's pairs at seed 0 "
+                                        "are tentative; HOLDOUT46's pair, a drift and a gain drift, is of one "
+                                        "family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]
     assert len(comb) >= 4
