@@ -74,6 +74,9 @@ def test_units_on_the_axes(drift_csv, capsys):
     assert any("input v [V]" in lab and "residual [um]" in lab for lab in labels)
     assert any("dv/dt [V/s]" in lab for lab in labels) and any("output y [um]" in lab for lab in labels)
     assert not any("units]" in lab for lab in labels)
+    # by default no unit is written (no "input units" placeholder)
+    bare = [a.get_xlabel() + " | " + a.get_ylabel() for f in rep.plots().values() for a in f.axes]
+    assert any(lab.startswith("input v | output y") for lab in bare) and not any("units" in lab for lab in bare)
     # the signatures panel says why a test under its threshold is present (its pair's test read the misfit)
     text = figs["signatures"].axes[3].texts[0].get_text()
     for name, ev in rep.first_evidence.items():

@@ -546,7 +546,7 @@ class Diagnosis:
                 f"rms_before={self.rms_before:.4g}, rms_after={self.rms_after:.4g})")
 
     # -- figures
-    def plots(self, input_unit="input units", output_unit="output units", *, input_name="input v",
+    def plots(self, input_unit=None, output_unit=None, *, input_name="input v",
               output_name="output y"):
         """Figures: ``signatures`` (the base residual in time, against the
         input and against the rate, the noise floor drawn; the rate axis
@@ -562,7 +562,7 @@ class Diagnosis:
         input_unit, output_unit : str or None
             Units of the input and output written on the axes in brackets
             (e.g. ``"V"``, ``"um"``); the record itself carries none. None
-            writes no unit.
+            (the default) writes no unit.
         input_name, output_name : str
             What the input and output are called on the axes (e.g. the CSV's
             column names ``"drive_V"``, ``"deflection_um"``).
@@ -722,7 +722,7 @@ class Diagnosis:
         out["gap"] = fig
         return out
 
-    def save_plots(self, folder, input_unit="input units", output_unit="output units", *, input_name="input v",
+    def save_plots(self, folder, input_unit=None, output_unit=None, *, input_name="input v",
                    output_name="output y"):
         """Write the figures of :meth:`plots` as PNG files; returns their paths.
 
