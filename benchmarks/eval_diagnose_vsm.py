@@ -32,9 +32,9 @@ def main():
         threadpool_limits(limits=1, user_api="blas")
     except ImportError:
         pass
-    print("| file | specimen | points | Hmax [T] | effects named | verdict | held-out RMS, % of span "
-          "(base -> final) | noise floors left | s |")
-    print("|---|---|---|---|---|---|---|---|---|")
+    print("| file | specimen | points | Hmax [T] | effects named | verdict | held-out RMS of the base model, % of "
+          "span | of the final model | noise floors left | s |")
+    print("|---|---|---|---|---|---|---|---|---|---|")
     named, timed, total = 0, 0, 0.0
     for name, (what, _) in LOOPS.items():
         H, m, _ = read_micromag(name)
@@ -50,7 +50,7 @@ def main():
         named += rep.effects[:1] == ["saturation"]
         timed += bool(set(rep.effects) & TIME_EFFECTS)
         print(f"| {name} | {what} | {H.size} | {abs(H).max():.2f} | {effects} | {rep.verdict} | "
-              f"{d['rms_before_pct']:.2f} -> {d['rms_after_pct']:.2f} | {rep.rms_heldout / rep.noise_floor:.1f} | "
+              f"{d['rms_before_pct']:.2f} | {d['rms_after_pct']:.2f} | {rep.rms_heldout / rep.noise_floor:.1f} | "
               f"{sec:.1f} |")
     print(f"\nsaturation named first on {named} of {len(LOOPS)} loops; a time effect named on {timed}; "
           f"{total:.1f} s in all")
