@@ -9,6 +9,7 @@ import numpy as np
 
 from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
 from .preisach_core import describe as describe_preisach_core
+from .signatures import SHIFT_OR_LAG
 
 SCHEMA_VERSION = 26
 
@@ -759,10 +760,6 @@ def _axis(name, unit):
     return f"{name} [{unit}]" if unit else name
 
 
-#: the two tests that read one misfit (a dead time and a lag; :func:`~hystcomp.diagnose.signatures.evidence`)
-_PAIRED_TEST = {"delay": "rate_dependence", "rate_dependence": "delay"}
-
-
 def _mark(name, ev):
     """What the signatures panel writes after a test's statistic: PRESENT, and why when the
     statistic alone does not say it (present through its pair's test; over its threshold but
@@ -771,5 +768,5 @@ def _mark(name, ev):
         return "  untested"
     over = ev["statistic"] > ev["threshold"]
     if ev["present"]:
-        return "  PRESENT" if over or name not in _PAIRED_TEST else f"  PRESENT (by {_PAIRED_TEST[name]}'s test)"
+        return "  PRESENT" if over or name not in SHIFT_OR_LAG else f"  PRESENT (by {SHIFT_OR_LAG[name]}'s test)"
     return "  (not counted: see its reading)" if over else ""

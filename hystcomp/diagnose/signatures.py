@@ -476,6 +476,10 @@ def evidence(rec, e, pred, sigma, only=None):
     return ev
 
 
+#: the two tests that read one misfit, each by the other's name (:func:`_shift_or_lag`)
+SHIFT_OR_LAG = {"delay": "rate_dependence", "rate_dependence": "delay"}
+
+
 def _shift_or_lag(ev):
     """A dead time T and a lag tau leave the same residual to first order in
     the frequency (e^(-sT) and 1 / (1 + s tau) both start 1 - s T), so the
@@ -485,10 +489,10 @@ def _shift_or_lag(ev):
     the fits tell them apart (the dead time, with fewer parameters, on a
     near tie).  A record driven at one frequency leaves rate dependence
     untested, and the delay on its own test."""
-    d, r = ev["delay"], ev["rate_dependence"]
-    if not (d["testable"] and r["testable"]):
+    if not all(ev[name]["testable"] for name in SHIFT_OR_LAG):
         return
-    for mine, other, name in ((d, r, "rate dependence"), (r, d, "delay")):
+    for own, paired in SHIFT_OR_LAG.items():
+        mine, other, name = ev[own], ev[paired], paired.replace("_", " ")
         if other["present"] and not mine["present"]:
             mine["present"] = True
             mine["reading"] = (f"present through the {name}'s test ({other['statistic']:.2f} > "
