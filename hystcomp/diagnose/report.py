@@ -148,8 +148,8 @@ class Diagnosis:
         an effect added after the first step whose step lowered the held-out
         mean square by less than 3 noise variances, and on a record
         explained a saturation at any step or an asymmetry so added under
-        2.5 (its step's evidence says so under ``small_later_step``; the
-        effects before it stay named).
+        2.5, and a saturation so added under 10 (its step's evidence says
+        so under ``small_later_step``; the effects before it stay named).
         Empty otherwise.
     ambiguous : dict
         Named effects the record does not tell apart from others: named
