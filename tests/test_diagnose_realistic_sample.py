@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-eight sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the forty-nine sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (54 clean records in all; HOLDOUT47's took 6.1 s in round 49's measurement). 81 runs at seed 0; 74 were right in round 49
+other set (55 clean records in all; HOLDOUT48's took 1.6 s in round 50's measurement). 82 runs at seed 0; 75 were right in round 50
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -32,6 +32,7 @@ dry friction, `explained` with nothing named at seed 0; HOLDOUT45's in round 47:
 `explained` with a saturation held tentative at seed 0; HOLDOUT46's in round 48: a polypyrrole bilayer bender whose
 domains switch as Frumkin lattice gases, left unexplained with nothing named at seed 0, see SATURATING_CLEAN;
 HOLDOUT47's in round 49: a polarised pair of magnetorheological clutches, `explained` with a saturation held
+tentative at seed 0; HOLDOUT48's in round 50: a magnetic shape-memory element, `explained` with a small saturation held
 tentative at seed 0). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
@@ -71,8 +72,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 81
-    assert sum(r["clean"] for r in rows) == 54
+    assert len(rows) == 82
+    assert sum(r["clean"] for r in rows) == 55
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -84,14 +85,14 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 74/81 right in round 49 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-47, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's and HOLDOUT46's counted wrong;
+    # 75/82 right in round 50 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-48, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's and HOLDOUT46's counted wrong;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
-    # round 47's rule on small saturations of explained records); at least 71 (88 %):
+    # round 47's rule on small saturations of explained records); at least 72 (88 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 71, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 72, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
