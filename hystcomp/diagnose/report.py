@@ -146,10 +146,12 @@ class Diagnosis:
         misfit is mostly of a kind no part describes; ``remaining`` says so
         under ``out_of_vocabulary``).  Also, on a record left unexplained,
         an effect added after the first step whose step lowered the held-out
-        mean square by less than 3 noise variances, and on a record
-        explained a saturation at any step or an asymmetry so added under
-        2.5, and a saturation so added under 10 (its step's evidence says
-        so under ``small_later_step``; the effects before it stay named).
+        mean square by less than 3 noise variances (a saturation or an
+        asymmetry: 60), and on a record explained a saturation at any step
+        or an asymmetry so added under 2.5, and a saturation so added under
+        10; the final model's loss without the step counts too, the larger
+        of the two is judged (its step's evidence says so under
+        ``small_later_step``; the effects before it stay named).
         Empty otherwise.
     ambiguous : dict
         Named effects the record does not tell apart from others: named
