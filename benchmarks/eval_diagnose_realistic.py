@@ -54,8 +54,16 @@ HOLDOUT48 was run once for the fiftieth round's measurement (24 of 30 right) and
 HOLDOUT49 was run once for the fifty-first round's measurement (22 of 30 right) and is part of ALL since.
 
 Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout49|all] [--seeds 3]
-     [--cases NAME ...] [--json OUT] [--jobs 2]
+     [--cases NAME ...] [--json OUT] [--csv OUT] [--compare SAVED] [--jobs 2]
      python benchmarks/eval_diagnose_realistic.py --summary OUT     (the figures of a saved run, again)
+     python benchmarks/eval_diagnose_realistic.py --summary NEW --compare SAVED   (run by run against another)
+
+``--csv`` writes each run as one line (the format of ``benchmarks/results/diagnose_realistic.csv``,
+every committed set's runs as measured: see ``benchmarks/results/README.md``); ``--summary`` and
+``--compare`` read either format. ``--compare`` lists the runs whose answer (named effects or
+verdict) differs from the saved file's, and how many went from right to wrong and back: a
+change to a decision is weighed run by run against the committed runs without running them
+again.
 
 After the figures it prints where the wrong runs are: how many named the right effects with the
 wrong verdict, missed an expected effect, named another beside the expected ones, or named
@@ -64,6 +72,7 @@ beside or instead, and how many of each kind are right up to a reported near tie
 """
 
 import argparse
+import csv
 import itertools
 import json
 import os
@@ -273,6 +282,129 @@ def summarise(rows, total=None):
     print(f"crashes: {crashes}{timing}")
     print_breakdown(breakdown(rows))
 
+#: the columns of a results file (``--csv``), in order
+CSV_COLUMNS = ("set", "case", "seed", "expected", "expect_verdict", "effects", "verdict", "right", "right_or_tie",
+               "ambiguous", "explained_over_limit", "clean", "combined", "rms_heldout", "rms_base", "noise_floor",
+               "true_noise", "seconds", "error", "measured_on", "steps")
+
+
+def set_of(case):
+    """The --set name of a case (the first set that holds it)."""
+    return next((n for n, cases in SETS.items() if case in cases), "?")
+
+
+def _names(cell):
+    return [x for x in cell.split(";") if x]
+
+
+def _number(cell):
+    return None if cell == "" else float(cell)
+
+
+def write_csv(rows, path, measured_on=""):
+    """Write `rows` (as :func:`run_one` returns them) to a results file at `path`, one run a line.
+
+    Names are joined by ";", a near tie as ``effect:alternative|alternative`` pairs, each
+    step as ``effect/kind/gain/loss_without/flags`` (flags: d dropped, t tentative, c core
+    shape) joined by " ; "; numbers to 6 significant digits (seconds to 0.01 s).
+    `measured_on`: the commit the runs were measured on, for rows that do not say."""
+    def g(x):
+        return "" if x is None else f"{x:.6g}"
+
+    with open(path, "w", newline="") as fh:
+        w = csv.writer(fh, lineterminator="\n")
+        w.writerow(CSV_COLUMNS)
+        for r in rows:
+            steps = " ; ".join(
+                f"{st['effect']}/{st.get('kind') or ''}/{g(st.get('gain'))}/{g(st.get('loss_without'))}/"
+                + "".join(f for f, key in (("d", "dropped"), ("t", "tentative"), ("c", "core_shape"))
+                          if st.get(key)) for st in r.get("steps") or [])
+            amb = ";".join(f"{e}:{'|'.join(a)}" for e, a in sorted((r.get("ambiguous") or {}).items()))
+            w.writerow([r.get("set") or set_of(r["case"]), r["case"], r["seed"], ";".join(r["expected"]),
+                        r["expect_verdict"], ";".join(r["effects"]), r["verdict"], int(r["right"]),
+                        int(r["right_or_tie"]), amb, int(r["explained_over_limit"]), int(r["clean"]),
+                        int(r["combined"]), g(r.get("rms_heldout")), g(r.get("rms_base")), g(r.get("noise_floor")),
+                        g(r.get("true_noise")), f"{r.get('seconds') or 0:.2f}", r.get("error") or "",
+                        r.get("measured_on") or measured_on, steps])
+
+
+def read_csv(path):
+    """The rows of a results file written by :func:`write_csv` (each a dict as :func:`run_one`
+    returns, its steps reduced to ``effect``, ``kind``, ``gain``, ``loss_without`` and the flags)."""
+    rows = []
+    with open(path, newline="") as fh:
+        reader = csv.DictReader(fh)
+        if tuple(reader.fieldnames or ()) != CSV_COLUMNS:
+            raise ValueError(f"{path}: columns {reader.fieldnames} but a results file has {list(CSV_COLUMNS)}")
+        for c in reader:
+            steps = []
+            for cell in filter(None, c["steps"].split(" ; ")):
+                effect, kind, gain, loss, flags = cell.split("/")
+                steps.append({"effect": effect, "kind": kind or None, "gain": _number(gain),
+                              "loss_without": _number(loss), "dropped": "d" in flags, "tentative": "t" in flags,
+                              "core_shape": "c" in flags})
+            rows.append({
+                "set": c["set"], "case": c["case"], "seed": int(c["seed"]), "expected": _names(c["expected"]),
+                "expect_verdict": c["expect_verdict"], "effects": _names(c["effects"]), "verdict": c["verdict"],
+                "right": c["right"] == "1", "right_or_tie": c["right_or_tie"] == "1",
+                "ambiguous": {e: a.split("|") for e, a in (x.split(":") for x in _names(c["ambiguous"]))},
+                "explained_over_limit": c["explained_over_limit"] == "1", "clean": c["clean"] == "1",
+                "combined": c["combined"] == "1", "rms_heldout": _number(c["rms_heldout"]),
+                "rms_base": _number(c["rms_base"]), "noise_floor": _number(c["noise_floor"]),
+                "true_noise": _number(c["true_noise"]), "seconds": float(c["seconds"]), "error": c["error"] or None,
+                "measured_on": c["measured_on"], "steps": steps})
+    return rows
+
+
+def load_rows(path):
+    """The rows and the wall time (None if not saved) of a --json or --csv file."""
+    if path.endswith(".csv"):
+        return read_csv(path), None
+    with open(path) as fh:
+        saved = json.load(fh)
+    return saved["rows"], saved.get("seconds")
+
+
+def compare(rows, saved, out=print):
+    """Run by run: the runs of `rows` whose answer (named effects, verdict) differs from the
+    same case and seed in `saved`. Prints one line a changed run and a count; returns a dict
+    ``changed``, ``to_right``, ``to_wrong``, ``tie_to_right``... (counts) and ``missing`` (runs
+    of `rows` not in `saved`).
+
+    Examples
+    --------
+    >>> old = [dict(case="a", seed=0, effects=["creep"], verdict="explained", right=True, right_or_tie=True),
+    ...        dict(case="b", seed=0, effects=[], verdict="unexplained", right=False, right_or_tie=False)]
+    >>> new = [dict(old[0]), dict(old[1], effects=["drift"], right=True, right_or_tie=True)]
+    >>> compare(new, old, out=lambda s: None)["to_right"]
+    1
+    """
+    by = {(r["case"], r["seed"]): r for r in saved}
+    c = Counter()
+    missing = 0
+    for r in rows:
+        o = by.get((r["case"], r["seed"]))
+        if o is None:
+            missing += 1
+            continue
+        if (list(r["effects"]), r["verdict"]) == (list(o["effects"]), o["verdict"]):
+            continue
+        c["changed"] += 1
+        c["to_right"] += r["right"] and not o["right"]
+        c["to_wrong"] += o["right"] and not r["right"]
+        c["tie_to_right"] += r["right_or_tie"] and not o["right_or_tie"]
+        c["tie_to_wrong"] += o["right_or_tie"] and not r["right_or_tie"]
+        mark = "+" if r["right"] and not o["right"] else "-" if o["right"] and not r["right"] else " "
+        out(f"{mark} {r['case'][:60]:60s} {r['seed']}  {','.join(o['effects']) or '-'} {o['verdict']} -> "
+            f"{','.join(r['effects']) or '-'} {r['verdict']}")
+    res = {k: c[k] for k in ("changed", "to_right", "to_wrong", "tie_to_right", "tie_to_wrong")}
+    res["missing"] = missing
+    out(f"changed answers: {res['changed']} of {len(rows) - missing} runs; right: +{res['to_right']} "
+        f"-{res['to_wrong']} (net {res['to_right'] - res['to_wrong']:+d}); right up to a near tie: "
+        f"+{res['tie_to_right']} -{res['tie_to_wrong']}" + (f"; {missing} runs not in the saved file" if missing
+                                                            else ""))
+    return res
+
 
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
@@ -280,19 +412,33 @@ def main(argv=None):
     p.add_argument("--seeds", type=int, default=3)
     p.add_argument("--cases", nargs="*", default=None)
     p.add_argument("--json", default=None)
+    p.add_argument("--csv", default=None, help="write the runs to a results file (one run a line)")
+    p.add_argument("--measured-on", metavar="COMMIT", default="",
+                   help="the commit the runs were made on, written in --csv's measured_on column")
+    p.add_argument("--compare", metavar="SAVED", default=None,
+                   help="list the runs whose answer differs from a saved --json or --csv file's")
     p.add_argument("--jobs", type=int, default=1)
     p.add_argument("--summary", metavar="JSON", default=None,
                    help="print the figures and the breakdown of wrong runs of an earlier run's --json file, "
                         "without running")
     a = p.parse_args(argv)
+    saved = None
+    if a.compare:
+        try:
+            saved, _ = load_rows(a.compare)
+        except (OSError, ValueError, KeyError, TypeError) as exc:
+            p.error(f"--compare {a.compare!r}: not a --json or --csv file of this script ({exc})")
     if a.summary:
         try:
-            with open(a.summary) as fh:
-                saved = json.load(fh)
-            rows = saved["rows"]
+            rows, seconds = load_rows(a.summary)
         except (OSError, ValueError, KeyError, TypeError) as exc:
-            p.error(f"--summary {a.summary!r}: not a --json file of this script ({exc})")
-        summarise(rows, saved.get("seconds"))
+            p.error(f"--summary {a.summary!r}: not a --json or --csv file of this script ({exc})")
+        summarise(rows, seconds)
+        if saved is not None:
+            print()
+            compare(rows, saved)
+        if a.csv:
+            write_csv(rows, a.csv, a.measured_on)
         return 0
     pool = {**SETS, "all": ALL}[a.set]
     names = a.cases or list(pool)
@@ -324,6 +470,11 @@ def main(argv=None):
               f"{r['verdict'][:11]:11s} {_fmt(ratio_floor):>9s} {_fmt(ratio_true):>8s} {flag:4s} "
               f"{r['seconds']:5.1f}s" + (f"  {r['error']}" if r["error"] else ""))
     summarise(rows, total)
+    if saved is not None:
+        print()
+        compare(rows, saved)
+    if a.csv:
+        write_csv(rows, a.csv, a.measured_on)
     if a.json:
         with open(a.json, "w") as fh:
             json.dump({"rows": rows, "right": sum(r["right"] for r in rows), "n": len(rows), "seconds": total},

@@ -10,7 +10,7 @@ import pytest
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, os.path.join(HERE, "..", "benchmarks"))
 
-from eval_diagnose_realistic import WRONG_KINDS, breakdown, main, wrong_kind  # noqa: E402
+from eval_diagnose_realistic import WRONG_KINDS, breakdown, main, read_csv, write_csv, wrong_kind  # noqa: E402
 
 
 def _row(expected, effects, right, verdict="explained", tie=None, error=None, **kw):
@@ -85,4 +85,51 @@ def test_summary_of_a_bad_file_is_one_line_and_exit_2(tmp_path, capsys):
         main(["--summary", str(path)])
     assert exc.value.code == 2
     err = capsys.readouterr().err
-    assert f"--summary '{path}': not a --json file of this script" in err
+    assert f"--summary '{path}': not a --json or --csv file of this script" in err
+
+
+def test_csv_round_trip_and_summary(tmp_path, capsys):
+    """A results file holds every field the figures and the breakdown need: written and read
+    back, the rows give the same summary as the JSON, and a step's fields survive."""
+    rows = [dict(r, case=f"c{i}", true_noise=0.1, rms_heldout=0.12345678, noise_floor=0.1, rms_base=0.5,
+                 seconds=1.234, steps=[{"effect": "creep", "kind": "creep_lags", "gain": 36.8515,
+                                        "loss_without": None, "dropped": False, "tentative": True,
+                                        "core_shape": False}])
+            for i, r in enumerate(ROWS)]
+    rows[1]["ambiguous"] = {"creep": ["drift", "gain_drift"]}
+    path = tmp_path / "runs.csv"
+    write_csv(rows, str(path), measured_on="abc1234")
+    back = read_csv(str(path))
+    assert [(r["case"], r["effects"], r["verdict"], r["right"], r["right_or_tie"], r["error"]) for r in back] == [
+        (r["case"], r["effects"], r["verdict"], r["right"], r["right_or_tie"], r["error"]) for r in rows]
+    assert back[1]["ambiguous"] == {"creep": ["drift", "gain_drift"]}
+    assert back[0]["rms_heldout"] == pytest.approx(0.123457, abs=1e-9)     # 6 significant digits
+    assert back[0]["steps"] == [{"effect": "creep", "kind": "creep_lags", "gain": 36.8515, "loss_without": None,
+                                 "dropped": False, "tentative": True, "core_shape": False}]
+    assert {r["measured_on"] for r in back} == {"abc1234"}
+    assert main(["--summary", str(path)]) == 0
+    assert "right verdict: 1/11" in capsys.readouterr().out
+
+
+def test_compare_lists_changed_runs(tmp_path, capsys):
+    """--compare: the runs whose named effects or verdict changed, and the net change in right runs."""
+    rows = [dict(r, case=f"c{i}") for i, r in enumerate(ROWS)]
+    old = tmp_path / "old.json"
+    old.write_text(json.dumps({"rows": rows}))
+    new_rows = [dict(r) for r in rows]
+    new_rows[2] = dict(new_rows[2], effects=["drift"], right=True, right_or_tie=True)   # missed -> right
+    new_rows[0] = dict(new_rows[0], effects=[], right=False, right_or_tie=False)        # right -> wrong
+    new = tmp_path / "new.json"
+    new.write_text(json.dumps({"rows": new_rows}))
+    assert main(["--summary", str(new), "--compare", str(old)]) == 0
+    out = capsys.readouterr().out
+    assert "changed answers: 2 of 11 runs; right: +1 -1 (net +0)" in out
+
+
+def test_results_file_with_other_columns_is_refused(tmp_path, capsys):
+    path = tmp_path / "other.csv"
+    path.write_text("case,seed\nx,0\n")
+    with pytest.raises(SystemExit) as exc:
+        main(["--summary", str(path)])
+    assert exc.value.code == 2
+    assert "not a --json or --csv file of this script" in capsys.readouterr().err
