@@ -54,7 +54,7 @@ HOLDOUT48 was run once for the fiftieth round's measurement (24 of 30 right) and
 HOLDOUT49 was run once for the fifty-first round's measurement (22 of 30 right) and is part of ALL since.
 
 Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout49|all] [--seeds 3]
-     [--cases NAME ...] [--json OUT] [--csv OUT] [--compare SAVED] [--jobs 2]
+     [--cases NAME ...] [--json OUT] [--csv OUT] [--compare SAVED] [--perturb SHARE] [--jobs 2]
      python benchmarks/eval_diagnose_realistic.py --summary OUT     (the figures of a saved run, again)
      python benchmarks/eval_diagnose_realistic.py --summary NEW --compare SAVED   (run by run against another)
 
@@ -116,15 +116,37 @@ def one_blas_thread():
 _LIMITS = None
 
 
-def run_one(name, seed):
-    """Diagnose one record; return a dict of what was expected and what came out."""
+def perturbed(y, noise_std, share, name, seed):
+    """`y` plus Gaussian noise of `share` times the record's true noise, drawn from a generator
+    seeded by the case's name and seed (the same perturbation on every run and machine).
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> a = perturbed(np.zeros(4), 2.0, 1e-4, "c", 0)
+    >>> bool(np.all(a == perturbed(np.zeros(4), 2.0, 1e-4, "c", 0))), bool(np.abs(a).max() < 1e-3)
+    (True, True)
+    """
+    import zlib
+
+    import numpy as np
+
+    rng = np.random.default_rng([zlib.crc32(name.encode()), seed, 1])
+    return y + share * noise_std * rng.standard_normal(len(y))
+
+
+def run_one(name, seed, perturb=0.0):
+    """Diagnose one record; return a dict of what was expected and what came out.  With
+    `perturb` > 0 the output is first moved by noise of `perturb` times the true noise
+    (:func:`perturbed`): how far the answer rests on the data's last digits."""
     from hystcomp.diagnose import diagnose
 
     rec = KNOWN[name](seed)
+    y = rec.y if not perturb else perturbed(rec.y, rec.noise_std, perturb, name, seed)
     t0 = time.perf_counter()
     try:
         # one thread a record: --jobs runs records side by side in processes
-        res = diagnose(rec.t, rec.v, rec.y, progress=False, workers=1)
+        res = diagnose(rec.t, rec.v, y, progress=False, workers=1)
         error = None
     except Exception as exc:  # a crash is a wrong answer, reported as such
         res, error = None, f"{type(exc).__name__}: {exc}"
@@ -413,6 +435,9 @@ def main(argv=None):
     p.add_argument("--cases", nargs="*", default=None)
     p.add_argument("--json", default=None)
     p.add_argument("--csv", default=None, help="write the runs to a results file (one run a line)")
+    p.add_argument("--perturb", type=float, default=0.0, metavar="SHARE",
+                   help="move each record's output by noise of SHARE times its true noise first (with "
+                        "--compare: how many answers rest on the data's last digits)")
     p.add_argument("--measured-on", metavar="COMMIT", default="",
                    help="the commit the runs were made on, written in --csv's measured_on column")
     p.add_argument("--compare", metavar="SAVED", default=None,
@@ -422,6 +447,8 @@ def main(argv=None):
                    help="print the figures and the breakdown of wrong runs of an earlier run's --json file, "
                         "without running")
     a = p.parse_args(argv)
+    if a.perturb < 0:
+        p.error(f"--perturb {a.perturb}: should be 0 or more (a share of the true noise)")
     saved = None
     if a.compare:
         try:
@@ -450,10 +477,10 @@ def main(argv=None):
     t0 = time.perf_counter()
     if a.jobs > 1:
         with ProcessPoolExecutor(a.jobs, initializer=one_blas_thread) as ex:
-            rows = list(ex.map(run_one, *zip(*jobs)))
+            rows = list(ex.map(run_one, *zip(*jobs), [a.perturb] * len(jobs)))
     else:
         one_blas_thread()
-        rows = [run_one(n, s) for n, s in jobs]
+        rows = [run_one(n, s, a.perturb) for n, s in jobs]
     total = time.perf_counter() - t0
     print(f"{'case':38s} sd {'expected':28s} {'named':32s} {'verdict':11s} "
           f"{'rms/floor':>9s} {'rms/true':>8s} ok   time")

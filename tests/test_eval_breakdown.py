@@ -133,3 +133,25 @@ def test_results_file_with_other_columns_is_refused(tmp_path, capsys):
         main(["--summary", str(path)])
     assert exc.value.code == 2
     assert "not a --json or --csv file of this script" in capsys.readouterr().err
+
+
+def test_perturbation_is_small_and_repeatable():
+    """--perturb moves the output by noise of the given share of the true noise, the same for a
+    case and seed on every run, another for another seed."""
+    import numpy as np
+
+    from eval_diagnose_realistic import perturbed
+
+    y = np.linspace(0.0, 1.0, 20000)
+    a = perturbed(y, 0.5, 1e-4, "case", 0)
+    assert np.array_equal(a, perturbed(y, 0.5, 1e-4, "case", 0))
+    assert not np.array_equal(a, perturbed(y, 0.5, 1e-4, "case", 1))
+    # the standard deviation of 20,000 draws is within 3 % of 0.5e-4 (its relative standard error is 0.5 %)
+    assert np.std(a - y) == pytest.approx(0.5e-4, rel=0.03)
+
+
+def test_negative_perturbation_is_refused(capsys):
+    with pytest.raises(SystemExit) as exc:
+        main(["--perturb", "-1", "--cases", "x"])
+    assert exc.value.code == 2
+    assert "--perturb -1.0: should be 0 or more" in capsys.readouterr().err
