@@ -4,7 +4,7 @@ Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in
 in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's; 35 min 50 s in round 49, 485, before HOLDOUT47 joined, while its measurement and its laws' tests shared the cores; 32 min 37 s in round 50, 505, this file alone): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-49 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-50 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,10 +49,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1230/1545 (79.6 %) over the fifty sets in round 51
-# (the forty-nine earlier sets 1208/1515 as in round 50; HOLDOUT49 22/30 when fresh and as committed: a Galfenol
-# rod), so it stays open.
-# At seed 0, as run here, 415/515 (80.6 %), 463.5 needed, so
+# The issue's criterion is over three seeds: 1246/1575 (79.1 %) over the fifty-one sets in round 52
+# (the fifty earlier sets 1230/1545 as in round 51; HOLDOUT50 16/30 when fresh and as committed: a harmonic drive),
+# so it stays open.
+# At seed 0, as run here, 420/525 (80.0 %), 472.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -63,22 +63,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48) and 22/30 (HOLDOUT49)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49) and 16/30 (HOLDOUT50)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1230/1545 right over three seeds of the fifty sets "
-                                         "(79.6 %); at seed 0 415/515 (80.6 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1246/1575 right over three seeds of the fifty-one sets "
+                                         "(79.1 %); at seed 0 420/525 (80.0 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 415/515 right at seed 0 in round 51 (80.6 %; 408/505 in round 50); at least 405, ten runs of
+    # regression guard: 420/525 right at seed 0 in round 52 (80.0 %; 415/515 in round 51); at least 410, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 515
-    assert right >= 405, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 525
+    assert right >= 410, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -88,9 +88,10 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 515 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 525 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
-    # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make
+    # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
+    # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
     saved = [r for r in read_csv(RESULTS) if r["seed"] == SEED]
     lines = []
     res = compare(rows, saved, out=lines.append)
@@ -119,12 +120,17 @@ def test_answers_as_committed(rows):
 #: named at 3.60 and 3.17 noise floors at seeds 0 and 1; at seed 2 a saturation and an asymmetry named (`unexplained`
 #: at 2.25), counted wrong. Since round 45 a Preisach-type (KP) core is taken on a record left unexplained with
 #: nothing named when it explains it: HOLDOUT35's cable at seeds 0 and 1 (1.01 and 1.23 noise floors) and
-#: HOLDOUT39's rod at seed 0 (1.10) are `explained`, nothing named, counted right
+#: HOLDOUT39's rod at seed 0 (1.10) are `explained`, nothing named, counted right. HOLDOUT50's harmonic drive (a
+#: play of the wave generator's friction on the motor's torque ahead of 42 teeth, each a wedge with friction that
+#: holds between two forces, bending in series and sharing the rim's travel: plays in series with compliances, not a
+#: PI core; a 12-play PI fit leaves 1.51-2.10 sigma), fresh in round 52: unexplained with nothing named at 1.41
+#: true noise levels at seed 0, `explained` with nothing named at seeds 1 and 2 (1.31 and 1.27)
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
                 "holdout39_clean_kim_critical_state_rod_inkjet_carriage_1445hz",
-                "holdout42_clean_niti_wire_bias_spring_tower_crane_1370hz")
+                "holdout42_clean_niti_wire_bias_spring_tower_crane_1370hz",
+                "holdout50_clean_harmonic_drive_table_tennis_1051hz")
 
 #: clean records whose core stiffens towards the ends of its stroke, which the diagnosis reads as a
 #: saturation: HOLDOUT34's voice-coil stage on Gent rubber pads that stick and slip (the pads'
@@ -212,7 +218,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50) or HOLDOUT49 (round 51). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51) or HOLDOUT50 (round 52). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -245,8 +251,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 102/165 runs (32/55 at seed 0) of the combined "
-                                        "cases of the fifty sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 102/168 runs (32/56 at seed 0) of the combined "
+                                        "cases of the fifty-one sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -287,7 +293,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "dashpot's saturation of an overdriven element tentative beside its rate "
                                         "dependence at seeds 0 and 1 (round 49's rule); HOLDOUT49's Galfenol rod's "
                                         "power cut at full drive (an initial state) missed beside its coil's heat "
-                                        "(creep) at seed 1; HOLDOUT46's pair, a drift "
+                                        "(creep) at seed 1; HOLDOUT50's harmonic drive's bus latency (a delay) "
+                                        "missed beside its slow current loop (a rate dependence) at every seed; "
+                                        "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-one sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (56 clean records in all; HOLDOUT49's took 7.9 s in round 51's measurement). 83 runs at seed 0; 75 were right in round 51
+other set (57 clean records in all; HOLDOUT50's took 7.9 s in round 52's measurement). 84 runs at seed 0; 75 were right in round 52
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -34,7 +34,9 @@ domains switch as Frumkin lattice gases, left unexplained with nothing named at 
 HOLDOUT47's in round 49: a polarised pair of magnetorheological clutches, `explained` with a saturation held
 tentative at seed 0; HOLDOUT48's in round 50: a magnetic shape-memory element, `explained` with a small saturation held
 tentative at seed 0; HOLDOUT49's in round 51: a Galfenol rod whose strain is lopsided about its bias, an asymmetry
-named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN). Since
+named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN; HOLDOUT50's in round 52: a harmonic drive whose
+teeth are wedges with friction in series with their compliance, not a PI core, left unexplained with nothing named at
+seed 0, see NOT_PI_CLEAN). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -73,8 +75,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 83
-    assert sum(r["clean"] for r in rows) == 56
+    assert len(rows) == 84
+    assert sum(r["clean"] for r in rows) == 57
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -86,9 +88,9 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 75/83 right in round 51 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-49, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and HOLDOUT49's
-    # counted wrong;
+    # 75/84 right in round 52 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-50, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's, HOLDOUT49's and
+    # HOLDOUT50's counted wrong;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
     # round 47's rule on small saturations of explained records); at least 72 (88 %):
     # three runs of margin for decisions that sit on a threshold and may fall

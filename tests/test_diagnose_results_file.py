@@ -76,7 +76,7 @@ def _sets_table(docs):
                      line)
         if m:
             table[m.group(1)] = (int(m.group(2)), int(m.group(3)))
-        m = re.match(r"\| all \w+ \| \| \d+ \| \| \*\*(\d+)/(\d+), [\d.]+ % \((\d+)\)\*\*; seed 0: (\d+)/(\d+) \|$",
+        m = re.match(r"\| all [\w-]+ \| \| \d+ \| \| \*\*(\d+)/(\d+), [\d.]+ % \((\d+)\)\*\*; seed 0: (\d+)/(\d+) \|$",
                      line)
         if m:
             total = tuple(int(x) for x in m.groups())

@@ -60,6 +60,8 @@ from test_realistic_generator import (_assert_drives_start_at_zero, _assert_meas
 from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
                                   read_late_misfit as _read_late_misfit, seg as _seg)
 
+pytestmark = pytest.mark.slow
+
 P = "holdout49_"
 EFFECTS = {"creep", "rate_dependence", "drift", "asymmetry", "saturation", "initial_state", "delay"}
 CLEAN = "clean_galfenol_rod_canoe_paddle_1187hz"
