@@ -429,6 +429,16 @@ def compare(rows, saved, out=print):
     return res
 
 
+def _finish(a, rows, seconds, saved):
+    """The figures of `rows`, their comparison with the `saved` rows (if any) and the --csv file."""
+    summarise(rows, seconds)
+    if saved is not None:
+        print()
+        compare(rows, saved)
+    if a.csv:
+        write_csv(rows, a.csv, a.measured_on)
+
+
 def main(argv=None):
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--set", choices=[*SETS, "all"], default="tuning")
@@ -461,12 +471,7 @@ def main(argv=None):
             rows, seconds = load_rows(a.summary)
         except (OSError, ValueError, KeyError, TypeError) as exc:
             p.error(f"--summary {a.summary!r}: not a --json or --csv file of this script ({exc})")
-        summarise(rows, seconds)
-        if saved is not None:
-            print()
-            compare(rows, saved)
-        if a.csv:
-            write_csv(rows, a.csv, a.measured_on)
+        _finish(a, rows, seconds, saved)
         return 0
     pool = {**SETS, "all": ALL}[a.set]
     names = a.cases or list(pool)
@@ -497,12 +502,7 @@ def main(argv=None):
         print(f"{r['case'][:38]:38s} {r['seed']:2d} {exp[:28]:28s} {','.join(r['effects'])[:32] or '-':32s} "
               f"{r['verdict'][:11]:11s} {_fmt(ratio_floor):>9s} {_fmt(ratio_true):>8s} {flag:4s} "
               f"{r['seconds']:5.1f}s" + (f"  {r['error']}" if r["error"] else ""))
-    summarise(rows, total)
-    if saved is not None:
-        print()
-        compare(rows, saved)
-    if a.csv:
-        write_csv(rows, a.csv, a.measured_on)
+    _finish(a, rows, total, saved)
     if a.json:
         with open(a.json, "w") as fh:
             json.dump({"rows": rows, "right": sum(r["right"] for r in rows), "n": len(rows), "seconds": total},
