@@ -218,7 +218,7 @@ controller's routine before every record but the initial-state cases', read by a
 plays fitted by NNLS leaves 1.28 ... 1.59 sigma RMS on its clean record (at most 4.7 ... 6.5 sigma), measured in
 tests/test_realistic_holdout49.py.
 :data:`HOLDOUT50` (``cases_holdout50.py``) was written after HOLDOUT49 was measured, by a session that did not read how
-the diagnosis decides, and run once for round 52's measurement (docs/diagnose.md, commit 26b2a98, 16 of 30 runs
+the diagnosis decides, and run once for round 52's measurement (docs/diagnose.md, commit 1d50c7f, 16 of 30 runs
 right); it is part of :data:`ALL` since.
 Its core is a robot wrist joint's harmonic drive (strain-wave gear) on a locked-output torsion bench, its motor in
 current (torque) mode, its twist read by the motor's encoder: 42 tooth pairs, each pressed into its tooth space by the

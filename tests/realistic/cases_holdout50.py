@@ -1,5 +1,5 @@
 """The HOLDOUT50 set: written after HOLDOUT49 was measured, by a session that did not read how the diagnosis decides,
-and run once for round 52's measurement (16 of 30 runs right on commit 26b2a98); part of ALL since.
+and run once for round 52's measurement (16 of 30 runs right on commit 1d50c7f); part of ALL since.
 
 Mechanisms and signals that the other sets do not have (the laws are in :mod:`.mechanisms50`, the signals in
 :mod:`.signals50`, each beside its source; the citations were written from memory, as they say). Every core is a robot
