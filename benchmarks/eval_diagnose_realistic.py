@@ -305,6 +305,7 @@ def summarise(rows, total=None):
     print(f"crashes: {crashes}{timing}")
     print_breakdown(breakdown(rows))
 
+
 #: the columns of a results file (``--csv``), in order
 CSV_COLUMNS = ("set", "case", "seed", "expected", "expect_verdict", "effects", "verdict", "right", "right_or_tie",
                "ambiguous", "explained_over_limit", "clean", "combined", "rms_heldout", "rms_base", "noise_floor",
