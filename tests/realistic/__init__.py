@@ -228,6 +228,15 @@ sharing the rim's travel, the cup and fixture in series, and the wave generator'
 motor's torque, before it all; at rest from the bench's zeroing before every record but the initial-state case's; a PI
 model of 12 plays fitted by NNLS leaves 1.51 ... 2.10 sigma RMS on its clean record (at most 7.6 ... 10.2 sigma),
 measured in tests/test_realistic_holdout50.py.
+:data:`HOLDOUT51` (``cases_holdout51.py``) was written after HOLDOUT50 was measured, by a session that did not read how
+the diagnosis decides; it is kept out of :data:`ALL` until it has been measured once.
+Its core is a multilayer stack of the relaxor 0.9 PMN - 0.1 PT, biased by its amplifier, driving a lever stage read by a
+capacitive gauge: 4096 polar clusters with Smolenskii's spread of Curie temperatures, log-normal sizes and random
+fields, each a Landau-Devonshire body in its well (the blocked ones switching where the thermally activated barrier
+falls to 25 k T, the ergodic ones in their deeper well), the strain electrostrictive, Q P^2, the bias where the
+curvatures of P and of its square cancel; at rest in the state the controller's start-up dither leaves at the bias
+before every record but the initial-state case's; a PI model of 12 plays fitted by NNLS leaves 1.21 ... 1.64 sigma RMS
+on its clean record (at most 5.3 ... 7.5 sigma), measured in tests/test_realistic_holdout51.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -282,6 +291,7 @@ from .cases_holdout47 import HOLDOUT47  # noqa: F401
 from .cases_holdout48 import HOLDOUT48  # noqa: F401
 from .cases_holdout49 import HOLDOUT49  # noqa: F401
 from .cases_holdout50 import HOLDOUT50  # noqa: F401
+from .cases_holdout51 import HOLDOUT51  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -298,4 +308,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
            "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "HOLDOUT46", "HOLDOUT47", "HOLDOUT48",
-           "HOLDOUT49", "HOLDOUT50", "ALL"]
+           "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "ALL"]
