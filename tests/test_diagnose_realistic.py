@@ -4,7 +4,7 @@ Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in
 in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's; 35 min 50 s in round 49, 485, before HOLDOUT47 joined, while its measurement and its laws' tests shared the cores; 32 min 37 s in round 50, 505, this file alone; 28 min 33 s in round 52, 525, this file alone with an empty numba cache): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-50 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-51 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,10 +49,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1246/1575 (79.1 %) over the fifty-one sets in round 52
-# (the fifty earlier sets 1230/1545 as in round 51; HOLDOUT50 16/30 when fresh and as committed: a harmonic drive),
+# The issue's criterion is over three seeds: 1260/1605 (78.5 %) over the fifty-two sets in round 53
+# (the fifty-one earlier sets 1246/1575 as in round 52; HOLDOUT51 14/30 when fresh and as committed: a PMN-PT stack),
 # so it stays open.
-# At seed 0, as run here, 420/525 (80.0 %), 472.5 needed, so
+# At seed 0, as run here, 425/535 (79.4 %), 481.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -63,22 +63,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49) and 16/30 (HOLDOUT50)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50) and 14/30 (HOLDOUT51)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1246/1575 right over three seeds of the fifty-one sets "
-                                         "(79.1 %); at seed 0 420/525 (80.0 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1260/1605 right over three seeds of the fifty-two sets "
+                                         "(78.5 %); at seed 0 425/535 (79.4 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 420/525 right at seed 0 in round 52 (80.0 %; 415/515 in round 51); at least 410, ten runs of
+    # regression guard: 425/535 right at seed 0 in round 53 (79.4 %; 420/525 in round 52); at least 415, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 525
-    assert right >= 410, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 535
+    assert right >= 415, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -88,7 +88,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 525 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 535 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -163,8 +163,13 @@ SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
 #: axis and the strain's limit while the drive down leaves 10-15 % of them axial (a 12-play PI fit leaves 1.28-1.59
 #: sigma). Fresh in round 51: an asymmetry (1.30 and 2.64 noise variances) named at seeds 0 and 2 (`explained` at 1.30
 #: true noise levels, `unexplained` at 1.25), nothing at seed 1 (`unexplained` at 1.66), counted wrong against the
-#: label; an asymmetry is all that may be named on it
-ASYMMETRIC_CLEAN = ("holdout49_clean_galfenol_rod_canoe_paddle_1187hz",)
+#: label; an asymmetry is all that may be named on it. HOLDOUT51's PMN-PT relaxor stack, whose strain is
+#: electrostrictive, Q P^2 (even in the polarisation), biased where the curvatures of P and of its square cancel only
+#: to first order (a 12-play PI fit leaves 1.21-1.64 sigma): fresh in round 53 an asymmetry named at every seed as the
+#: first step (0.54, 1.14 and 0.25 noise variances gained held out: round 47's rule on small steps of explained records
+#: holds back saturations and later asymmetries, not a first one), `explained` at 1.04-1.09 true noise levels
+ASYMMETRIC_CLEAN = ("holdout49_clean_galfenol_rod_canoe_paddle_1187hz",
+                    "holdout51_clean_pmn_pt_stack_snooker_cue_1183hz")
 
 
 def _named_on_clean(rows):
@@ -189,7 +194,7 @@ def test_no_effect_named_on_clean_records(rows):
     # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads,
     # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT, HOLDOUT45's Terfenol-D rod and HOLDOUT46's polypyrrole
     # bender may get a saturation and nothing else, and may be left unexplained (SATURATING_CLEAN); HOLDOUT49's
-    # Galfenol rod an asymmetry and nothing else (ASYMMETRIC_CLEAN)
+    # Galfenol rod and HOLDOUT51's PMN-PT stack an asymmetry and nothing else (ASYMMETRIC_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
@@ -200,7 +205,7 @@ def test_no_effect_named_on_clean_records(rows):
                                         "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
-                                        "drop at seed 1 and on HOLDOUT49's Galfenol rod at seeds 0 and 2 (since round 47 the small saturations of HOLDOUT35's cable, "
+                                        "drop at seed 1, on HOLDOUT49's Galfenol rod at seeds 0 and 2 and on HOLDOUT51's PMN-PT stack at every seed (since round 47 the small saturations of HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]
@@ -218,7 +223,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51) or HOLDOUT50 (round 52). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51), HOLDOUT50 (round 52) or HOLDOUT51 (round 53). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -251,8 +256,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 102/168 runs (32/56 at seed 0) of the combined "
-                                        "cases of the fifty-one sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 102/171 runs (32/57 at seed 0) of the combined "
+                                        "cases of the fifty-two sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -295,6 +300,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "power cut at full drive (an initial state) missed beside its coil's heat "
                                         "(creep) at seed 1; HOLDOUT50's harmonic drive's bus latency (a delay) "
                                         "missed beside its slow current loop (a rate dependence) at every seed; "
+                                        "HOLDOUT51's PMN-PT stack's epoxy bond line creeping under a clipping "
+                                        "gauge converter: the creep missed at every seed (the clipped samples, "
+                                        "noise-free, left the noise floor 200 times too low at seed 1); "
                                         "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):

@@ -1,12 +1,12 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-one sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-two sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (57 clean records in all; HOLDOUT50's took 7.9 s in round 52's measurement). 84 runs at seed 0; 75 were right in round 52
+other set (58 clean records in all; HOLDOUT51's took 4.2 s in round 53's measurement). 85 runs at seed 0; 75 were right in round 53
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -36,7 +36,8 @@ tentative at seed 0; HOLDOUT48's in round 50: a magnetic shape-memory element, `
 tentative at seed 0; HOLDOUT49's in round 51: a Galfenol rod whose strain is lopsided about its bias, an asymmetry
 named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN; HOLDOUT50's in round 52: a harmonic drive whose
 teeth are wedges with friction in series with their compliance, not a PI core, left unexplained with nothing named at
-seed 0, see NOT_PI_CLEAN). Since
+seed 0, see NOT_PI_CLEAN; HOLDOUT51's in round 53: a PMN-PT relaxor stack whose strain is electrostrictive (even in
+the polarisation) about its bias, an asymmetry named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -75,8 +76,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 84
-    assert sum(r["clean"] for r in rows) == 57
+    assert len(rows) == 85
+    assert sum(r["clean"] for r in rows) == 58
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -88,9 +89,9 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 75/84 right in round 52 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-50, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's, HOLDOUT49's and
-    # HOLDOUT50's counted wrong;
+    # 75/85 right in round 53 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
+    # clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's, HOLDOUT49's,
+    # HOLDOUT50's and HOLDOUT51's counted wrong;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
     # round 47's rule on small saturations of explained records); at least 72 (88 %):
     # three runs of margin for decisions that sit on a threshold and may fall
@@ -108,7 +109,7 @@ def test_no_effect_named_on_clean_records(rows):
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed; "
                                         "3.50 noise variances), an asymmetry on HOLDOUT49's Galfenol rod at seed 0 "
-                                        "(round 51, 1.30); HOLDOUT36's and HOLDOUT40's small saturations "
+                                        "(round 51, 1.30) and on HOLDOUT51's PMN-PT stack (round 53); HOLDOUT36's and HOLDOUT40's small saturations "
                                         "are tentative since round 47")
 def test_no_effect_named_on_any_clean_record(rows):
     assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 5
