@@ -53,6 +53,7 @@ from realistic import signals51 as s51
 from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
                                       _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms
+from test_realistic_holdout50 import _big, _full_both_ways
 
 pytestmark = pytest.mark.slow
 
@@ -89,19 +90,6 @@ def _core_cached(name, seed):
 def _core(e, v, stack=None):
     """The rate-independent stack's reading (um at the lever's tip) for the drive v."""
     return m51.core_reading(e, m51.amp_voltage(e, v), stack)
-
-
-def _big(rec, a, b, floor=7.0):
-    """(RMS, largest) of a beyond a gain and an offset on b, in sigma; both asked over `floor`."""
-    mx, rms = _fit(a, b)
-    assert rms > floor * rec.noise_std and mx > floor * rec.noise_std
-    return rms / rec.noise_std, mx / rec.noise_std
-
-
-def _full_both_ways(e):
-    """The programme reaches the full reach both ways (its knots), and the sampled drive within 1e-3 of it."""
-    kx = [k[1] for k in e["knots"]]
-    return max(kx) == 1.0 and min(kx) == -1.0 and e["x"].max() > 0.999 and e["x"].min() < -0.999
 
 
 def _never_still(e):

@@ -20,6 +20,8 @@ import numpy as np
 from numba import njit
 from scipy.special import ndtri
 
+from .mechanisms50 import relax  # y relaxing toward x with a time constant, exact per step
+
 # ---- the rate-independent core: a PMN-PT relaxor stack's polar nanoregions, read through a lever stage ----
 #
 # The actuator is a multilayer stack of the relaxor 0.9 PMN - 0.1 PT (lead magnesium niobate - lead titanate), 200
@@ -521,23 +523,6 @@ def chiller(t, t_lead, band, d_cold, d_load, tau_w):
         T, now, on = stop, t_sw, not on
         switches.append((t_sw, on))
     return out, switches
-
-
-@njit(cache=True)
-def relax(t, x, tau, y0):
-    """y relaxing toward x (linear between the times t) with the time constant tau, from y0: tau y' = x - y, exact per
-    step."""
-    n = t.shape[0]
-    out = np.empty(n)
-    y = y0
-    out[0] = y
-    for i in range(1, n):
-        r = (t[i] - t[i - 1]) / tau
-        e = math.exp(-r)
-        wgt = (1.0 - e) / r
-        y = x[i] + (y - x[i - 1]) * e - (x[i] - x[i - 1]) * wgt
-        out[i] = y
-    return out
 
 
 def stack_temperature(t, t_lead, band, d_cold, d_load, tau_w, tau_s, dt_lead):
