@@ -1,5 +1,5 @@
 """An "explained" verdict needs the held-out RMS within 1.5 noise floors by the
-floor's own standard error (hystcomp.diagnose.record.noise_floor gives it as
+floor's own standard error (hystcomp.diagnose.noise.noise_floor gives it as
 ``relative_standard_error``): a floor estimated a little high does not pass a
 residual a little above the bound.
 """
@@ -11,7 +11,7 @@ import pytest
 
 from hystcomp.datasets import hidden_effect_data
 from hystcomp.diagnose import diagnose, search
-from hystcomp.diagnose.record import HF_STANDARD_ERROR, _hf_noise
+from hystcomp.diagnose.noise import HF_STANDARD_ERROR, _hf_noise
 
 
 def test_high_frequency_floor_standard_error_as_stated():

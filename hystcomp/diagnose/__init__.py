@@ -266,7 +266,8 @@ def evidence(t, v, y, model=None, validation=0.3, held_out="auto"):
     (True, False)
     """
     from ..identify.search import Structure, VariableProjection
-    from .record import Record, noise_floor
+    from .noise import noise_floor
+    from .record import Record
     from .base import base_context
     from .signatures import evidence as _evidence
 

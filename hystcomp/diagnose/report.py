@@ -7,11 +7,12 @@ import textwrap
 
 import numpy as np
 
-from .record import HOLDS_CARRIED, caution, quiet_caution, start_caution
+from .noise import HOLDS_CARRIED
+from .record import caution, quiet_caution, start_caution
 from .preisach_core import describe as describe_preisach_core
 from .signatures import SHIFT_OR_LAG
 
-SCHEMA_VERSION = 26
+SCHEMA_VERSION = 27
 
 
 def _jsonable(x):
@@ -464,6 +465,11 @@ class Diagnosis:
         if hc is not None:
             lines.append(f"  noise floor: the output's scatter during the holds ({hc['scatter']:.4g}) was structure, "
                          f"not noise: a model left {hc['rms_heldout']:.4g} held out, below {HOLDS_CARRIED} of it")
+        nc = self.noise_info.get("clipped")
+        if nc:
+            lines.append(f"  noise floor: {nc['samples']} samples ({100 * nc['share']:.3g} %) sit in runs of one value at "
+                         "the output's largest or smallest, clipped (a converter at full scale, a stop): they carry "
+                         "no noise and were left out of it")
         if self.rest is not None and self.rest.get("other") is not None:
             lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():

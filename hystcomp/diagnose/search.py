@@ -11,9 +11,10 @@ from ..identify.parallel_fits import optimise_all
 from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, misfit_share, play_thresholds, rest_point, step_kind  # noqa: F401
+from .noise import HOLDS_CARRIED, holds_carried_structure, noise_floor
 from .off_centre import off_centre_test
 from .preisach_core import preisach_core
-from .record import BEYOND, HOLDS_CARRIED, N_BLOCKS, Record, caution, holds_carried_structure, noise_floor
+from .record import BEYOND, N_BLOCKS, Record, caution
 from .resolution import finer_core
 from .revise import PARSIMONY, n_parameters as _n_parameters, revise
 from .signatures import evidence as _evidence
