@@ -49,10 +49,11 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1260/1605 (78.5 %) over the fifty-two sets in round 53
-# (the fifty-one earlier sets 1246/1575 as in round 52; HOLDOUT51 14/30 when fresh and as committed: a PMN-PT stack),
-# so it stays open.
-# At seed 0, as run here, 425/535 (79.4 %), 481.5 needed, so
+# The issue's criterion is over three seeds: 1264/1605 (78.8 %) over the fifty-two sets in round 54
+# (1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
+# records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
+# 17/30 as committed: a PMN-PT stack), so it stays open.
+# At seed 0, as run here, 427/535 (79.8 %), 481.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -65,20 +66,20 @@ def test_no_crash(rows):
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
 # 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50) and 14/30 (HOLDOUT51)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1260/1605 right over three seeds of the fifty-two sets "
-                                         "(78.5 %); at seed 0 425/535 (79.4 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1264/1605 right over three seeds of the fifty-two sets "
+                                         "(78.8 %); at seed 0 427/535 (79.8 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 425/535 right at seed 0 in round 53 (79.4 %; 420/525 in round 52); at least 415, ten runs of
+    # regression guard: 427/535 right at seed 0 in round 54 (79.8 %; 425 in round 53); at least 417, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
     assert len(rows) >= 535
-    assert right >= 415, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 417, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -167,7 +168,9 @@ SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
 #: electrostrictive, Q P^2 (even in the polarisation), biased where the curvatures of P and of its square cancel only
 #: to first order (a 12-play PI fit leaves 1.21-1.64 sigma): fresh in round 53 an asymmetry named at every seed as the
 #: first step (0.54, 1.14 and 0.25 noise variances gained held out: round 47's rule on small steps of explained records
-#: holds back saturations and later asymmetries, not a first one), `explained` at 1.04-1.09 true noise levels
+#: holds back saturations and later asymmetries, not a first one), `explained` at 1.04-1.09 true noise levels. Since
+#: round 54 a first asymmetry on an explained record needs 1.5 noise variances: nothing is named on the stack at any
+#: seed, nor on the rod at seed 0 (1.30)
 ASYMMETRIC_CLEAN = ("holdout49_clean_galfenol_rod_canoe_paddle_1187hz",
                     "holdout51_clean_pmn_pt_stack_snooker_cue_1183hz")
 
@@ -205,7 +208,7 @@ def test_no_effect_named_on_clean_records(rows):
                                         "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
-                                        "drop at seed 1, on HOLDOUT49's Galfenol rod at seeds 0 and 2 and on HOLDOUT51's PMN-PT stack at every seed (since round 47 the small saturations of HOLDOUT35's cable, "
+                                        "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed 0, nor on HOLDOUT51's PMN-PT stack; since round 47 the small saturations of HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]

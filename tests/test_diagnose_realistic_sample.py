@@ -6,7 +6,7 @@ benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sampl
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (58 clean records in all; HOLDOUT51's took 4.2 s in round 53's measurement). 85 runs at seed 0; 75 were right in round 53
+other set (58 clean records in all; HOLDOUT51's took 4.2 s in round 53's measurement). 85 runs at seed 0; 77 were right in round 54 (75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -34,10 +34,12 @@ domains switch as Frumkin lattice gases, left unexplained with nothing named at 
 HOLDOUT47's in round 49: a polarised pair of magnetorheological clutches, `explained` with a saturation held
 tentative at seed 0; HOLDOUT48's in round 50: a magnetic shape-memory element, `explained` with a small saturation held
 tentative at seed 0; HOLDOUT49's in round 51: a Galfenol rod whose strain is lopsided about its bias, an asymmetry
-named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN; HOLDOUT50's in round 52: a harmonic drive whose
+named at seed 0, `explained`, counted wrong until round 54, see ASYMMETRIC_CLEAN; HOLDOUT50's in round 52: a harmonic drive whose
 teeth are wedges with friction in series with their compliance, not a PI core, left unexplained with nothing named at
 seed 0, see NOT_PI_CLEAN; HOLDOUT51's in round 53: a PMN-PT relaxor stack whose strain is electrostrictive (even in
-the polarisation) about its bias, an asymmetry named at seed 0, `explained`, counted wrong, see ASYMMETRIC_CLEAN). Since
+the polarisation) about its bias, an asymmetry named at seed 0, `explained`, counted wrong until round 54, see
+ASYMMETRIC_CLEAN; since round 54 a first asymmetry on an explained record needs 1.5 noise variances, and these two
+gained 1.30 and 0.54). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -89,15 +91,15 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 75/85 right in round 53 (round 22's 52/54, one fewer since round 32, one more since round 36, and the
-    # clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's, HOLDOUT49's,
-    # HOLDOUT50's and HOLDOUT51's counted wrong;
+    # 77/85 right in round 54 (75 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
+    # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
+    # HOLDOUT50's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first asymmetries;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
-    # round 47's rule on small saturations of explained records); at least 72 (88 %):
+    # round 47's rule on small saturations of explained records); at least 74 (87 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 72, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 74, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
@@ -108,9 +110,9 @@ def test_no_effect_named_on_clean_records(rows):
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed; "
-                                        "3.50 noise variances), an asymmetry on HOLDOUT49's Galfenol rod at seed 0 "
-                                        "(round 51, 1.30) and on HOLDOUT51's PMN-PT stack (round 53); HOLDOUT36's and HOLDOUT40's small saturations "
-                                        "are tentative since round 47")
+                                        "3.50 noise variances); HOLDOUT36's and HOLDOUT40's small saturations "
+                                        "are tentative since round 47, HOLDOUT49's and HOLDOUT51's first asymmetries "
+                                        "(1.30 and 0.54) since round 54")
 def test_no_effect_named_on_any_clean_record(rows):
     assert len([r for r in rows if r["case"] in SATURATING_CLEAN]) == 5
     named = [r for r in rows if r["clean"] and r["effects"]]

@@ -129,7 +129,9 @@ class Diagnosis:
     noise_floor : float
         Noise floor estimated from the record [output units] (how:
         ``noise_info``; its relative standard error:
-        ``noise_info["relative_standard_error"]``).
+        ``noise_info["relative_standard_error"]``; samples clipped at the
+        output's largest or smallest value, left out of it:
+        ``noise_info["clipped"]``).
     explained_limit : float
         The bound on an "explained" held-out RMS, in noise floors: 1.5 less
         the floor's relative standard error (1.5 (1 - se)), so that a floor
