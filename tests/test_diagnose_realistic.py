@@ -208,7 +208,9 @@ def test_no_effect_named_on_clean_records(rows):
                                         "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
-                                        "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed 0, nor on HOLDOUT51's PMN-PT stack; since round 47 the small saturations of HOLDOUT35's cable, "
+                                        "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
+                                        "0, nor on HOLDOUT51's PMN-PT stack; since round 47 the small saturations of "
+                                        "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
     named = [r for r in rows if r["clean"] and r["effects"]]

@@ -469,9 +469,9 @@ class Diagnosis:
                          f"not noise: a model left {hc['rms_heldout']:.4g} held out, below {HOLDS_CARRIED} of it")
         nc = self.noise_info.get("clipped")
         if nc:
-            lines.append(f"  noise floor: {nc['samples']} samples ({100 * nc['share']:.3g} %) sit in runs of one value at "
-                         "the output's largest or smallest, clipped (a converter at full scale, a stop): they carry "
-                         "no noise and were left out of it")
+            lines.append(f"  noise floor: {nc['samples']} samples ({100 * nc['share']:.3g} %) sit in runs of one "
+                         "value at the output's largest or smallest, clipped (a converter at full scale, a stop): "
+                         "they carry no noise and were left out of it")
         if self.rest is not None and self.rest.get("other") is not None:
             lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():
