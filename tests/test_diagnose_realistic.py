@@ -1,10 +1,11 @@
 """Acceptance of issue 10: the diagnosis on realistic records it was not built from.
 
 Marked ``slow`` (13 minutes on two cores in round 30, 305 records; 9 min 40 s in round 31, 315; 10 min 0 s
-in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's; 35 min 50 s in round 49, 485, before HOLDOUT47 joined, while its measurement and its laws' tests shared the cores; 32 min 37 s in round 50, 505, this file alone; 28 min 33 s in round 52, 525, this file alone with an empty numba cache): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
+in round 32, 325; 9 min 38 s in round 33, 335; 10 min 11 s in round 34, 345; 16 min 10 s in round 35, 355; 14 min 27 s in round 36, 365; 16 min 23 s in round 37, 375; 20 min 46 s in round 38, 385, with the HOLDOUT36 set's own checks; 24 min 2 s in round 39, 395, with HOLDOUT37's; 22 min 46 s in round 40, 405, with HOLDOUT38's; 39 min 27 s in round 41, 415, with HOLDOUT39's, while a CI run shared the two cores; 25 min 6 s in round 42, 425, with HOLDOUT40's, while the sets' law tests shared them; 19 min 30 s in round 43, 435, with HOLDOUT41's; 47 min 25 s in round 44, 445, with HOLDOUT42's, while a diagnosis of 167 records shared the two cores; 23 min 1 s in round 45, 455, with HOLDOUT43's; 23 min 54 s in round 46, 465, with HOLDOUT44's; 25 min 13 s in round 47, 475, with HOLDOUT45's; 30 min 47 s in round 48, 485, with HOLDOUT46's; 35 min 50 s in round 49, 485, before HOLDOUT47 joined, while its measurement and its laws' tests shared the cores; 32 min 37 s in round 50, 505, this file alone; 28 min 33 s in round 52, 525, this file alone with an empty numba cache; 41 min 16 s in round 54, 535, while a
+measurement of 30 records shared the cores): it runs with ``pytest -m slow``, not in the default suite, which runs a sample of it
 (``test_diagnose_realistic_sample.py``: three whole sets and every clean record).
 
-Every case of the tuning, held-out and HOLDOUT2-51 sets of ``tests/realistic`` (one seed each
+Every case of the tuning, held-out and HOLDOUT2-52 sets of ``tests/realistic`` (one seed each
 here, the benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three) is diagnosed once, on
 two processes, and judged against the issue's criteria:
 
@@ -49,11 +50,11 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1264/1605 (78.8 %) over the fifty-two sets in round 54
-# (1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
+# The issue's criterion is over three seeds: 1267/1635 (77.5 %) over the fifty-three sets in round 54
+# (the fifty-two earlier sets 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
-# 17/30 as committed: a PMN-PT stack), so it stays open.
-# At seed 0, as run here, 427/535 (79.8 %), 481.5 needed, so
+# 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
+# open. At seed 0, as run here, 427/545 (78.3 %), 490.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -64,21 +65,22 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50) and 14/30 (HOLDOUT51)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51) and 3/30 (HOLDOUT52)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1264/1605 right over three seeds of the fifty-two sets "
-                                         "(78.8 %); at seed 0 427/535 (79.8 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1267/1635 right over three seeds of the fifty-three sets "
+                                         "(77.5 %); at seed 0 427/545 (78.3 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 427/535 right at seed 0 in round 54 (79.8 %; 425 in round 53); at least 417, ten runs of
+    # regression guard: 427/545 right at seed 0 in round 54 (78.3 %; HOLDOUT52 0 of 10; 425/535 in round 53); at
+    # least 417, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 535
+    assert len(rows) >= 545
     assert right >= 417, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
@@ -89,7 +91,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 535 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 545 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -170,9 +172,15 @@ SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
 #: first step (0.54, 1.14 and 0.25 noise variances gained held out: round 47's rule on small steps of explained records
 #: holds back saturations and later asymmetries, not a first one), `explained` at 1.04-1.09 true noise levels. Since
 #: round 54 a first asymmetry on an explained record needs 1.5 noise variances: nothing is named on the stack at any
-#: seed, nor on the rod at seed 0 (1.30)
+#: seed, nor on the rod at seed 0 (1.30). HOLDOUT52's paraffin-in-silica phase-change film, whose pores melt when a
+#: liquid sleeve grows along the wall and freeze when the crystal enters through the mouth (Gibbs-Thomson at two
+#: curvatures, 1 / (r - t) and 2 / (q r - t)), so that its relays' thresholds are spread differently on the way up and
+#: on the way down and its loops are not point-symmetric (a 12-play PI fit leaves 1.43-1.55 sigma): fresh in round 54
+#: an asymmetry named at every seed as the first step (3.44, 2.64 and 5.75 noise variances gained held out),
+#: `explained` at 1.05-1.21 true noise levels
 ASYMMETRIC_CLEAN = ("holdout49_clean_galfenol_rod_canoe_paddle_1187hz",
-                    "holdout51_clean_pmn_pt_stack_snooker_cue_1183hz")
+                    "holdout51_clean_pmn_pt_stack_snooker_cue_1183hz",
+                    "holdout52_clean_paraffin_silica_film_croquet_mallet_1447hz")
 
 
 def _named_on_clean(rows):
@@ -197,7 +205,8 @@ def test_no_effect_named_on_clean_records(rows):
     # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads,
     # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT, HOLDOUT45's Terfenol-D rod and HOLDOUT46's polypyrrole
     # bender may get a saturation and nothing else, and may be left unexplained (SATURATING_CLEAN); HOLDOUT49's
-    # Galfenol rod and HOLDOUT51's PMN-PT stack an asymmetry and nothing else (ASYMMETRIC_CLEAN)
+    # Galfenol rod, HOLDOUT51's PMN-PT stack and HOLDOUT52's phase-change film an asymmetry and nothing else
+    # (ASYMMETRIC_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
@@ -209,7 +218,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
                                         "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
-                                        "0, nor on HOLDOUT51's PMN-PT stack; since round 47 the small saturations of "
+                                        "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
+                                        "every seed (since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
@@ -228,7 +238,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51), HOLDOUT50 (round 52) or HOLDOUT51 (round 53). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51), HOLDOUT50 (round 52), HOLDOUT51 (round 53) or HOLDOUT52 (round 54). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -261,8 +271,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 102/171 runs (32/57 at seed 0) of the combined "
-                                        "cases of the fifty-two sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 103/174 runs (32/58 at seed 0) of the combined "
+                                        "cases of the fifty-three sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -307,7 +317,10 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "missed beside its slow current loop (a rate dependence) at every seed; "
                                         "HOLDOUT51's PMN-PT stack's epoxy bond line creeping under a clipping "
                                         "gauge converter: the creep missed at every seed (the clipped samples, "
-                                        "noise-free, left the noise floor 200 times too low at seed 1); "
+                                        "noise-free, left the noise floor 200 times too low at seed 1, until "
+                                        "round 54); HOLDOUT52's phase-change film's PLC scan (a delay) and "
+                                        "capacitance-to-digital converter (an asymmetry): the asymmetry held "
+                                        "tentative by round 49's rule at seeds 0 and 2; "
                                         "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):

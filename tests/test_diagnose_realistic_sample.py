@@ -1,12 +1,13 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-two sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-three sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (58 clean records in all; HOLDOUT51's took 4.2 s in round 53's measurement). 85 runs at seed 0; 77 were right in round 54 (75 in round 53)
+other set (59 clean records in all; HOLDOUT52's took 5.9 s in round 54's measurement). 86 runs at seed 0; 77 were right in
+round 54 (75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -39,7 +40,9 @@ teeth are wedges with friction in series with their compliance, not a PI core, l
 seed 0, see NOT_PI_CLEAN; HOLDOUT51's in round 53: a PMN-PT relaxor stack whose strain is electrostrictive (even in
 the polarisation) about its bias, an asymmetry named at seed 0, `explained`, counted wrong until round 54, see
 ASYMMETRIC_CLEAN; since round 54 a first asymmetry on an explained record needs 1.5 noise variances, and these two
-gained 1.30 and 0.54). Since
+gained 1.30 and 0.54; HOLDOUT52's in round 54: a paraffin-in-silica phase-change film whose pores melt along
+their walls and freeze through their mouths, an asymmetry named at seed 0 (3.44 noise variances), `explained`, counted
+wrong, see ASYMMETRIC_CLEAN). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -78,8 +81,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 85
-    assert sum(r["clean"] for r in rows) == 58
+    assert len(rows) == 86
+    assert sum(r["clean"] for r in rows) == 59
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -91,11 +94,12 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 77/85 right in round 54 (75 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
+    # 77/86 right in round 54 (75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
     # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
-    # HOLDOUT50's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first asymmetries;
+    # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
+    # asymmetries;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
-    # round 47's rule on small saturations of explained records); at least 74 (87 %):
+    # round 47's rule on small saturations of explained records); at least 74 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
@@ -110,7 +114,8 @@ def test_no_effect_named_on_clean_records(rows):
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed; "
-                                        "3.50 noise variances); HOLDOUT36's and HOLDOUT40's small saturations "
+                                        "3.50 noise variances) and an asymmetry on HOLDOUT52's phase-change film "
+                                        "(round 54, 3.44); HOLDOUT36's and HOLDOUT40's small saturations "
                                         "are tentative since round 47, HOLDOUT49's and HOLDOUT51's first asymmetries "
                                         "(1.30 and 0.54) since round 54")
 def test_no_effect_named_on_any_clean_record(rows):

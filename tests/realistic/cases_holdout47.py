@@ -109,9 +109,7 @@ def _unipolar(rng, dt, gen):
 
 
 def _bipolar(rng, dt, gen):
-    x, t, kn = _knotted(rng, dt, gen)
-    amp = rng.uniform(44.0, 48.0)
-    return x, t, kn, amp, _scale(x, amp)
+    return set_tools.bipolar(rng, dt, gen, s47.knots_at)
 
 
 # ---- clean ----

@@ -62,7 +62,7 @@ from . import mechanisms48 as m48
 from . import signals48 as s48
 from . import set_tools
 from .record import case_set, finish
-from .set_tools import scale as _scale
+from .set_tools import fine as _fine, scale as _scale
 
 HOLDOUT48, case, _rng = case_set("holdout48_", 48000)
 
@@ -93,14 +93,7 @@ def _unipolar(rng, dt, gen):
 
 
 def _bipolar(rng, dt, gen):
-    x, t, kn = _knotted(rng, dt, gen)
-    amp = rng.uniform(44.0, 48.0)
-    return x, t, kn, amp, _scale(x, amp)
-
-
-def _fine(t, sub):
-    """The times t (uniform, from 0) with sub - 1 more between each two."""
-    return np.arange((len(t) - 1) * sub + 1) * (t[1] - t[0]) / sub
+    return set_tools.bipolar(rng, dt, gen, s48.knots_at)
 
 
 # ---- clean ----

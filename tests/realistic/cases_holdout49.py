@@ -66,7 +66,7 @@ from . import mechanisms49 as m49
 from . import signals49 as s49
 from . import set_tools
 from .record import case_set, finish
-from .set_tools import scale as _scale
+from .set_tools import fine as _fine, scale as _scale
 
 HOLDOUT49, case, _rng = case_set("holdout49_", 49000)
 
@@ -96,14 +96,7 @@ def _unipolar(rng, dt, gen):
 
 
 def _bipolar(rng, dt, gen):
-    x, t, kn = _knotted(rng, dt, gen)
-    amp = rng.uniform(44.0, 48.0)
-    return x, t, kn, amp, _scale(x, amp)
-
-
-def _fine(t, sub):
-    """The times t (uniform, from 0) with sub - 1 more between each two."""
-    return np.arange((len(t) - 1) * sub + 1) * (t[1] - t[0]) / sub
+    return set_tools.bipolar(rng, dt, gen, s49.knots_at)
 
 
 def _reading(core, v, rod=None, coil=1.0):

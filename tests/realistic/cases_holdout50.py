@@ -65,7 +65,7 @@ from . import mechanisms50 as m50
 from . import signals50 as s50
 from . import set_tools
 from .record import case_set, finish
-from .set_tools import scale as _scale
+from .set_tools import fine as _fine, scale as _scale
 
 HOLDOUT50, case, _rng = case_set("holdout50_", 50000)
 
@@ -92,18 +92,11 @@ def _unipolar(rng, dt, gen):
 
 
 def _bipolar(rng, dt, gen):
-    x, t, kn = _knotted(rng, dt, gen)
-    amp = rng.uniform(44.0, 48.0)
-    return x, t, kn, amp, _scale(x, amp)
+    return set_tools.bipolar(rng, dt, gen, s50.knots_at)
 
 
 #: the pair's fine steps a sample (the current loop and the core run on them)
 PAIR_SUB = 4
-
-
-def _fine(t, sub):
-    """The times t (uniform, from 0) with sub - 1 more between each two."""
-    return np.arange((len(t) - 1) * sub + 1) * (t[1] - t[0]) / sub
 
 
 def _reading(core, v, joint=None):

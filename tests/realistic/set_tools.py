@@ -57,6 +57,19 @@ def knotted(rng, dt, gen, evaluate):
     return balanced(make)
 
 
+def bipolar(rng, dt, gen, evaluate):
+    """A balanced bipolar drive (:func:`knotted`) scaled to a peak drawn from 44 ... 48 V:
+    ``(drive, t, knots, peak, scaled drive)``."""
+    x, t, kn = knotted(rng, dt, gen, evaluate)
+    amp = rng.uniform(44.0, 48.0)
+    return x, t, kn, amp, scale(x, amp)
+
+
+def fine(t, sub):
+    """The times t (uniform, from 0) with sub - 1 more between each two."""
+    return np.arange((len(t) - 1) * sub + 1) * (t[1] - t[0]) / sub
+
+
 def unipolar(rng, dt, gen, evaluate):
     """A unipolar drive 0 ... top (top 88 ... 97 V) from a knot programme ``gen(rng)``, drawn
     until it fits the record: ``(t, knots, programme, top, drive)``."""
