@@ -1,4 +1,4 @@
-"""The noise floor from holds (hystcomp.diagnose.record.noise_floor) is not taken from an output
+"""The noise floor from holds (hystcomp.diagnose.noise.noise_floor) is not taken from an output
 that oscillates while the input is held (round 18).
 
 The scatter of the output during the holds sets the floor when it exceeds the residual's
@@ -20,7 +20,7 @@ import numpy as np
 import pytest
 
 from hystcomp.diagnose import diagnose
-from hystcomp.diagnose.record import OSCILLATING, hold_oscillation
+from hystcomp.diagnose.noise import OSCILLATING, hold_oscillation
 from realistic import mechanisms as me
 
 DT = 1 / 400

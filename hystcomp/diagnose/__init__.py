@@ -3,7 +3,7 @@ effects by evidence, and say honestly when the data are not explained.
 
 :func:`diagnose` fits a plain PI model (eq. 18; thresholds up to the full
 input span) on the first part of a record and estimates the record's
-**noise floor** from the record itself (:func:`~hystcomp.diagnose.record.noise_floor`:
+**noise floor** from the record itself (:func:`~hystcomp.diagnose.noise.noise_floor`:
 the high-frequency part of the residual, and the output's scatter during
 input holds).  Then, step by step, it tries every candidate effect's model
 part (:mod:`hystcomp.identify.parts`), each fitted by variable projection
