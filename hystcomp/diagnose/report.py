@@ -471,7 +471,8 @@ class Diagnosis:
         if nc:
             lines.append(f"  noise floor: {nc['samples']} samples ({100 * nc['share']:.3g} %) sit in runs of one "
                          "value at the output's largest or smallest, clipped (a converter at full scale, a stop): "
-                         "they carry no noise and were left out of it")
+                         "they carry no noise and were left out of it; the held-out RMS still counts those in the "
+                         "held-out part, where a model that clips leaves about 0, so it may read below the floor")
         if self.rest is not None and self.rest.get("other") is not None:
             lines.append("  rest: " + self.rest["why"])
         for name, why in self.untested.items():
