@@ -11,6 +11,7 @@ from ..identify.parallel_fits import optimise_all
 from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, misfit_share, play_thresholds, rest_point, step_kind  # noqa: F401
+from .held_creep import creep_beyond_core
 from .noise import HOLDS_CARRIED, holds_carried_structure, noise_floor
 from .off_centre import off_centre_test
 from .preisach_core import preisach_core
@@ -501,10 +502,17 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     nibbled = rms_final > explained_limit * sigma and share < NIBBLE_SHARE
     if chosen and (nibbled or rms_final > OOV_FLOOR * sigma and (
             share < NAMED_SHARE or (confirmed and rms_final > OOV_LEFT * sigma))):
-        tentative, chosen = list(chosen), []
-        for st in steps:
-            st["tentative"] = True
-        tried = f"the best model within the vocabulary (PI + {', '.join(tentative)})"
+        tried = f"the best model within the vocabulary (PI + {', '.join(chosen)})"
+        # creep found by its hold test stays named: no rate-independent core relaxes during holds
+        kept = {i: why for i, why in creep_beyond_core(steps, final_ev).items()
+                if steps[i]["effect"] in chosen and not steps[i].get("tentative")}
+        for i, st in enumerate(steps):
+            if i in kept:
+                st["evidence"]["named_beyond_vocabulary"] = kept[i]
+            else:
+                st["tentative"] = True
+        named = {steps[i]["effect"] for i in kept}
+        tentative, chosen = [e for e in chosen if e not in named], [e for e in chosen if e in named]
         if rms_final <= OOV_FLOOR * sigma:
             what = (f"{tried} leaves {rms_final / sigma:.1f} noise floors and removes only {100 * share:.0f} % of "
                     f"the base model's misfit above the noise (naming an effect on a record left unexplained "
@@ -516,10 +524,16 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         else:
             what = (f"{tried} removes {100 * share:.0f} % of the base model's misfit above the noise but leaves "
                     f"{rms_final / sigma:.1f} noise floors (naming allows at most {OOV_LEFT:g}): what is left")
+        said = (f"the extensions are tentative, not named{': ' + ', '.join(tentative) if named else ''}"
+                if tentative else "")
+        if kept:
+            said += ("; " if said else "") + "; ".join(kept.values())
         remaining["out_of_vocabulary"] = (
-            f"{what} is of a kind hystcomp has no part for (e.g. a hysteresis core that is not PI); the "
-            "extensions are tentative, not named")
-        stopped += f"; extensions tentative: {', '.join(tentative)}"
+            f"{what} is of a kind hystcomp has no part for (e.g. a hysteresis core that is not PI); {said}")
+        if tentative:
+            stopped += f"; extensions tentative: {', '.join(tentative)}"
+        if named:
+            stopped += f"; named beyond the vocabulary's misfit: {', '.join(sorted(named))}"
     ambiguous = one_rate_tie(rec, chosen, untested, _alternatives(steps, chosen))
     for eff, alts in ambiguous.items():
         say(f"{eff}: the record does not tell it from {' or '.join(alts)} (near tie at its step)")
