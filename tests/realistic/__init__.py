@@ -249,6 +249,16 @@ the film's thickness taking the matrix's and the wax's expansion and the wax's 1
 controller's decaying thermal conditioning leaves before every record but the initial-state case's; a PI model of 12
 plays fitted by NNLS leaves 1.43 ... 1.55 sigma RMS on its clean record (at most 7.8 ... 10.2 sigma), measured in
 tests/test_realistic_holdout52.py.
+:data:`HOLDOUT53` (``cases_holdout53.py``) was written after HOLDOUT52 was measured, by a session that did not read how
+the diagnosis decides; it has not been measured yet and is kept out of :data:`ALL` until it is. Its core is a
+metal-hydride actuator: an AB5 hydride powder (a blend of LaNi(5-y)Al(y)) behind a steel diaphragm, its hydrogen
+pressure set by an electrochemical hydrogen pump at Nernst's equilibrium with the drive, 6000 classes of particles each
+a relay of the pressure between its absorption and desorption plateaus (Everett's independent domains; the plateaus'
+hysteresis the work of accommodating the hydride's swelling, Flanagan), the alpha phase's hydrogen by Sieverts' law and
+the hydride's on its sloping branch, the lattice's swelling and the gas's pressure bowing the diaphragm, read by a
+capacitive gauge; at rest in the state the controller's decaying pressure cycling leaves before every record but the
+initial-state case's; a PI model of 12 plays fitted by NNLS leaves 1.49 ... 1.70 sigma RMS on its clean record (at most
+6.9 ... 9.2 sigma), measured in tests/test_realistic_holdout53.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -305,6 +315,7 @@ from .cases_holdout49 import HOLDOUT49  # noqa: F401
 from .cases_holdout50 import HOLDOUT50  # noqa: F401
 from .cases_holdout51 import HOLDOUT51  # noqa: F401
 from .cases_holdout52 import HOLDOUT52  # noqa: F401
+from .cases_holdout53 import HOLDOUT53  # noqa: F401  (not in ALL until measured)
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -321,4 +332,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
            "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "HOLDOUT46", "HOLDOUT47", "HOLDOUT48",
-           "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "HOLDOUT52", "ALL"]
+           "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "HOLDOUT52", "HOLDOUT53", "ALL"]
