@@ -50,11 +50,13 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1267/1635 (77.5 %) over the fifty-three sets in round 54
-# (the fifty-two earlier sets 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
+# The issue's criterion is over three seeds: 1287/1665 (77.3 %) over the fifty-four sets in round 55
+# (1270/1635 over the fifty-three earlier sets: round 55's rule on creep beside a misfit out of the vocabulary made
+# three creep runs of HOLDOUT42 and HOLDOUT43 right; 1267 in round 54; HOLDOUT53 17/30 when fresh and as committed: a
+# metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 427/545 (78.3 %), 490.5 needed, so
+# open. At seed 0, as run here, 433/555 (78.0 %), 499.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -65,23 +67,23 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51) and 3/30 (HOLDOUT52)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52) and 17/30 (HOLDOUT53)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1267/1635 right over three seeds of the fifty-three sets "
-                                         "(77.5 %); at seed 0 427/545 (78.3 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1287/1665 right over three seeds of the fifty-four sets "
+                                         "(77.3 %); at seed 0 433/555 (78.0 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 427/545 right at seed 0 in round 54 (78.3 %; HOLDOUT52 0 of 10; 425/535 in round 53); at
-    # least 417, ten runs of
+    # regression guard: 433/555 right at seed 0 in round 55 (78.0 %; HOLDOUT53 5 of 10, round 55's rule on creep one
+    # more of the fifty-three earlier sets; 427/545 in round 54); at least 423, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 545
-    assert right >= 417, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 555
+    assert right >= 423, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -91,7 +93,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 545 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 555 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -178,9 +180,14 @@ SATURATING_CLEAN = ("holdout34_clean_gent_pads_washing_machine_agitator_1785hz",
 #: on the way down and its loops are not point-symmetric (a 12-play PI fit leaves 1.43-1.55 sigma): fresh in round 54
 #: an asymmetry named at every seed as the first step (3.44, 2.64 and 5.75 noise variances gained held out),
 #: `explained` at 1.05-1.21 true noise levels
+#: HOLDOUT53's metal-hydride cell, whose hydrogen pressure is set by a pump at Nernst's equilibrium with the drive
+#: (ln p linear in the drive, so the particles' plateaus are crossed lopsidedly about the bias): fresh in round 55
+#: nothing named at seed 0, an asymmetry at seeds 1 and 2 (2.24 and 2.56 noise variances gained held out), `explained`
+#: at seed 1 and `unexplained` at seed 2 (1.18 and 1.74 true noise levels)
 ASYMMETRIC_CLEAN = ("holdout49_clean_galfenol_rod_canoe_paddle_1187hz",
                     "holdout51_clean_pmn_pt_stack_snooker_cue_1183hz",
-                    "holdout52_clean_paraffin_silica_film_croquet_mallet_1447hz")
+                    "holdout52_clean_paraffin_silica_film_croquet_mallet_1447hz",
+                    "holdout53_clean_hydride_cell_kayak_paddle_1381hz")
 
 
 def _named_on_clean(rows):
@@ -205,8 +212,8 @@ def test_no_effect_named_on_clean_records(rows):
     # NOT_PI_CLEAN; `explained` when a Preisach-type core is taken, since round 45); HOLDOUT34's stiffening pads,
     # HOLDOUT36's saturating iron, HOLDOUT40's switching PZT, HOLDOUT45's Terfenol-D rod and HOLDOUT46's polypyrrole
     # bender may get a saturation and nothing else, and may be left unexplained (SATURATING_CLEAN); HOLDOUT49's
-    # Galfenol rod, HOLDOUT51's PMN-PT stack and HOLDOUT52's phase-change film an asymmetry and nothing else
-    # (ASYMMETRIC_CLEAN)
+    # Galfenol rod, HOLDOUT51's PMN-PT stack, HOLDOUT52's phase-change film and HOLDOUT53's metal-hydride cell an
+    # asymmetry and nothing else (ASYMMETRIC_CLEAN)
     named = _named_on_clean(clean)
     assert not named, _table(named)
 
@@ -219,7 +226,7 @@ def test_no_effect_named_on_clean_records(rows):
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
                                         "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
-                                        "every seed (since round 47 the small saturations of "
+                                        "every seed, on HOLDOUT53's metal-hydride cell at seeds 1 and 2 (since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
@@ -238,7 +245,7 @@ def _over(rows):
 # 1.51 true noise levels; now `unexplained` (its bound 1.48 floors). HOLDOUT16's hunting
 # hydraulic follower, when fresh, was explained at 8-11 true noise levels: its holds' scatter, a
 # limit cycle, set the floor (round 18: an oscillating scatter no longer does). Over 1065 runs of the
-# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51), HOLDOUT50 (round 52), HOLDOUT51 (round 53) or HOLDOUT52 (round 54). HOLDOUT34's stage
+# thirty-four sets (round 35) no "explained" verdict was above 1.5 true noise levels, nor on HOLDOUT35 (round 37), HOLDOUT36 (round 38), HOLDOUT37 (round 39), HOLDOUT38 (round 40), HOLDOUT39 (round 41), HOLDOUT40 (round 42), HOLDOUT41 (round 43), HOLDOUT42 (round 44), HOLDOUT43 (round 45), HOLDOUT44 (round 46), HOLDOUT45 (round 47), HOLDOUT47 (round 49), HOLDOUT48 (round 50), HOLDOUT49 (round 51), HOLDOUT50 (round 52), HOLDOUT51 (round 53), HOLDOUT52 (round 54) or HOLDOUT53 (round 55). HOLDOUT34's stage
 # on Gent pads after an emergency stop, at seed 0, is `explained` at 1.46 estimated noise floors, within
 # its bound of 1.47, but its floor, the output's scatter over only two holds (standard error 2.2 %), is
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
@@ -271,8 +278,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 103/174 runs (32/58 at seed 0) of the combined "
-                                        "cases of the fifty-three sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 103/177 runs (32/59 at seed 0) of the combined "
+                                        "cases of the fifty-four sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -320,7 +327,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "noise-free, left the noise floor 200 times too low at seed 1, until "
                                         "round 54); HOLDOUT52's phase-change film's PLC scan (a delay) and "
                                         "capacitance-to-digital converter (an asymmetry): the asymmetry held "
-                                        "tentative by round 49's rule at seeds 0 and 2; "
+                                        "tentative by round 49's rule at seeds 0 and 2; HOLDOUT53's hydride bed's "
+                                        "log creep under a potentiostat's limit read as an asymmetry, a rate "
+                                        "dependence and a drift at every seed; "
                                         "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):

@@ -1,13 +1,13 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-three sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-four sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (59 clean records in all; HOLDOUT52's took 5.9 s in round 54's measurement). 86 runs at seed 0; 77 were right in
-round 54 (75 in round 53)
+other set (60 clean records in all; HOLDOUT53's took 5.7 s in round 55's measurement). 87 runs at seed 0; 78 were right in
+round 55 (77 in round 54, 75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -42,7 +42,9 @@ the polarisation) about its bias, an asymmetry named at seed 0, `explained`, cou
 ASYMMETRIC_CLEAN; since round 54 a first asymmetry on an explained record needs 1.5 noise variances, and these two
 gained 1.30 and 0.54; HOLDOUT52's in round 54: a paraffin-in-silica phase-change film whose pores melt along
 their walls and freeze through their mouths, an asymmetry named at seed 0 (3.44 noise variances), `explained`, counted
-wrong, see ASYMMETRIC_CLEAN). Since
+wrong, see ASYMMETRIC_CLEAN; HOLDOUT53's in round 55: a metal-hydride cell whose particles switch between their
+absorption and desorption plateaus, `explained` with nothing named at seed 0 (an asymmetry at seeds 1 and 2, see
+ASYMMETRIC_CLEAN)). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -81,8 +83,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 86
-    assert sum(r["clean"] for r in rows) == 59
+    assert len(rows) == 87
+    assert sum(r["clean"] for r in rows) == 60
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -94,16 +96,16 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 77/86 right in round 54 (75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
+    # 78/87 right in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
     # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
     # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
     # asymmetries;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
-    # round 47's rule on small saturations of explained records); at least 74 (86 %):
+    # round 47's rule on small saturations of explained records); at least 75 (86 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 74, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 75, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):
