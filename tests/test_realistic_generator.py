@@ -118,6 +118,11 @@ def test_sets_are_disjoint_and_large_enough():
     assert family({"gain_drift", "drift", "output_saturation"}) == {"drift", "saturation"}
 
 
+#: the sets whose own test file (tests/test_realistic_holdoutNN.py, marked slow) builds every case at seeds 0, 1 and 2
+#: and checks that the seeds differ: HOLDOUT10 onwards
+OWN_SLOW_FILE = tuple(f"holdout{k}_" for k in range(10, 100))
+
+
 @pytest.mark.parametrize("name", sorted(ALL))
 def test_every_case_builds_a_finite_record(name):
     cases = ALL
@@ -126,8 +131,10 @@ def test_every_case_builds_a_finite_record(name):
     assert r.t is None or (len(r.t) == len(r.v) and np.all(np.diff(r.t) > 0))
     assert r.expect_verdict in ("explained", "unexplained", "either")
     assert r.noise_std > 0
-    # seeds differ in more than the noise for cases that draw magnitudes
-    assert not np.array_equal(r.y, cases[name](1).y)
+    # seeds differ in more than the noise for cases that draw magnitudes; for HOLDOUT10 onwards their slow test files
+    # check it at three seeds, and building seed 1 here too cost CI about 400 CPU-seconds (round 55)
+    if not name.startswith(OWN_SLOW_FILE):
+        assert not np.array_equal(r.y, cases[name](1).y)
 
 
 def test_holdout2_was_measured_and_joined_all():
@@ -383,6 +390,32 @@ def _assert_set_layout(H, prefix, first, rec, monitored, others_carry_drive=Fals
     singles = [r for r in first.values() if len(r.expect_effects) == 1]
     assert len(singles) == 7 and all(r.expect_verdict == "either" for r in singles)
     assert len({f for r in singles for f in family(r.expect_effects)}) == 7
+
+
+def _assert_joined_ten(H, prefix, effects, order, rec, monitored, unipolar, pair, pair_effects, again):
+    """The layout test of a ten-case set built as HOLDOUT52 and later are (one per kind in `order`, every drive
+    starting and ending at 0 V), joined to ALL: :func:`_assert_measured_set`, :func:`_assert_set_layout` (with
+    `monitored`, the others carrying their drive), seven families, the pair `pair` (short name) labelled
+    `pair_effects` with verdict "either", the clean case explained and the out-of-vocabulary one unexplained,
+    :func:`_assert_spans_and_rates` (`unipolar` short names), drives from 0 V, the case `again` the same when called
+    again, and every drive back within 0.05 V of 0 at its end (a never-still programme's last move lands as the record
+    ends). `rec(short_name, seed)` gives a record. Returns the seed-0 records by name."""
+    first = _assert_measured_set(H, prefix, effects)
+    assert [n[len(prefix):].startswith(k) for n, k in zip(H, order)] == [True] * 10
+    _assert_set_layout(H, prefix, first, rec, monitored, others_carry_drive=True)
+    assert len(family(effects)) == 7
+    assert first[prefix + pair].expect_effects == set(pair_effects) and first[prefix + pair].expect_verdict == "either"
+    by_kind = {n[len(prefix):].split("_")[0]: r for n, r in first.items()}
+    assert by_kind["clean"].expect_verdict == "explained" and by_kind["oov"].expect_verdict == "unexplained"
+    _assert_spans_and_rates(H, prefix, first, rec, unipolar)
+    _assert_drives_start_at_zero(H, prefix, rec)
+    repeated = H[prefix + again](1)
+    np.testing.assert_array_equal(repeated.y, rec(again, 1).y)
+    np.testing.assert_array_equal(repeated.v, rec(again, 1).v)
+    for name in H:
+        for seed in range(3):
+            assert abs(rec(name[len(prefix):], seed).extra["drive"][-1]) < 0.05, (name, seed)
+    return first
 
 
 def _assert_drives_start_at_zero(H, prefix, rec, skip=()):

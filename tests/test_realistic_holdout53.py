@@ -50,12 +50,11 @@ from scipy.optimize import brentq
 from scipy.special import ndtri
 
 import realistic
-from realistic import HOLDOUT53, family
+from realistic import HOLDOUT53
 from realistic import cases_holdout53 as c53
 from realistic import mechanisms53 as m53
 from realistic import signals53 as s53
-from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
-                                      _assert_spans_and_rates, _linear_misfit, _rms)
+from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
 from realistic.set_checks import beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms
 
 pytestmark = pytest.mark.slow
@@ -117,25 +116,8 @@ def _never_still(e):
 def test_holdout53_is_well_formed_and_in_all():
     H = HOLDOUT53
     assert c53.HOLDOUT53 is H and realistic.HOLDOUT53 is H and "HOLDOUT53" in realistic.__all__
-    first = _assert_measured_set(H, P, EFFECTS)
-    assert [n[len(P):].startswith(k) for n, k in zip(H, ORDER)] == [True] * 10
-    _assert_set_layout(H, P, first, _rec, MONITORED, others_carry_drive=True)
-    assert len(family(EFFECTS)) == 7
-    pair = first[P + PAIR]
-    assert pair.expect_effects == {"creep", "saturation"} and pair.expect_verdict == "either"
-    assert first[P + CLEAN].expect_verdict == "explained"
-    assert first[P + OOV].expect_verdict == "unexplained"
-    _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
     # every drive starts at 0 V, the initial-state case's too (its cell starts elsewhere, not its drive)
-    _assert_drives_start_at_zero(H, P, _rec)
-    # deterministic per seed: a case called again gives the same record
-    again = HOLDOUT53[P + ASYM](1)
-    np.testing.assert_array_equal(again.y, _rec(ASYM, 1).y)
-    np.testing.assert_array_equal(again.v, _rec(ASYM, 1).v)
-    # every drive back at 0 V at its end (within 0.05 V: a never-still programme's last move lands as the record ends)
-    for name in H:
-        for s in range(3):
-            assert abs(_rec(name[len(P):], s).extra["drive"][-1]) < 0.05
+    _assert_joined_ten(H, P, EFFECTS, ORDER, _rec, MONITORED, UNIPOLAR, PAIR, {"creep", "saturation"}, ASYM)
 
 
 def test_reach_and_programmes():
