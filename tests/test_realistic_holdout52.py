@@ -56,7 +56,7 @@ from realistic import cases_holdout52 as c52
 from realistic import mechanisms52 as m52
 from realistic import signals52 as s52
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
-from realistic.set_checks import holds as _holds, pi_fit_rms as _pi_fit_rms
+from realistic.set_checks import assert_relay_core as _relay_core, holds as _holds, pi_fit_rms as _pi_fit_rms
 from test_realistic_holdout50 import _big, _full_both_ways, _lopsided
 
 pytestmark = pytest.mark.slow
@@ -234,20 +234,10 @@ def test_rest_state_is_the_limit_of_a_decaying_cycling():
 
 def test_core_return_point_memory_rate_independence_and_pi_closeness():
     e = dict(_rec(CLEAN, 0).extra)
-    # a minor loop from a turning point closes there and leaves no trace (1e-12 nm): return-point memory (relays)
-    up = np.r_[np.linspace(0, 40, 200), np.linspace(40, -25, 200)]
-    v_up, v_dn = np.linspace(-25, 20, 100), np.linspace(20, -25, 100)
-    a_ = m52.core_reading(e, np.r_[up, v_up, v_dn, np.linspace(-25, 45, 240)])
-    b_ = m52.core_reading(e, np.r_[up, np.linspace(-25, 45, 240)])
-    np.testing.assert_allclose(a_[600:], b_[400:], rtol=0, atol=1e-12)
-    assert a_[599] == pytest.approx(b_[399], abs=1e-12)
-    # ... and is a loop: at 0 V its rising branch lies over 2 nm (7 sigma) below its falling one (measured 3.7)
-    rising = float(np.interp(0.0, v_up, a_[400:500]))
-    falling = float(np.interp(0.0, v_dn[::-1], a_[500:600][::-1]))
-    assert falling - rising > 2.0
+    # a minor loop from a turning point closes there and leaves no trace (1e-12 nm): return-point memory (relays);
+    # it is a loop: at 0 V its rising branch lies over 2.0 nm below its falling one (7 sigma; measured 3.7);
     # rate independent: the drive played on another time grid (every sample twice) reads the same at the same drive
-    v = e["drive"][:4000]
-    np.testing.assert_array_equal(m52.core_reading(e, np.repeat(v, 2))[::2], m52.core_reading(e, v))
+    _relay_core(lambda v: m52.core_reading(e, v), e["drive"], 2.0)
     for seed in (0, 1, 2):
         rec = _rec(CLEAN, seed)
         # a PI model of 12 plays fitted by NNLS leaves 1.0 ... 2.0 sigma RMS (measured 1.43 ... 1.55) and at most 12

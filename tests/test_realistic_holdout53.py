@@ -55,7 +55,8 @@ from realistic import cases_holdout53 as c53
 from realistic import mechanisms53 as m53
 from realistic import signals53 as s53
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
-from realistic.set_checks import beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms
+from realistic.set_checks import assert_relay_core as _relay_core, beyond_gain_and_offset as _fit, holds as _holds
+from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
 pytestmark = pytest.mark.slow
 
@@ -243,20 +244,10 @@ def test_rest_state_is_the_limit_of_a_decaying_cycling():
 
 def test_core_return_point_memory_rate_independence_and_pi_closeness():
     e = dict(_rec(CLEAN, 0).extra)
-    # a minor loop from a turning point closes there and leaves no trace (1e-12 um): return-point memory (relays)
-    up = np.r_[np.linspace(0, 40, 200), np.linspace(40, -25, 200)]
-    v_up, v_dn = np.linspace(-25, 20, 100), np.linspace(20, -25, 100)
-    a_ = m53.core_reading(e, np.r_[up, v_up, v_dn, np.linspace(-25, 45, 240)])
-    b_ = m53.core_reading(e, np.r_[up, np.linspace(-25, 45, 240)])
-    np.testing.assert_allclose(a_[600:], b_[400:], rtol=0, atol=1e-12)
-    assert a_[599] == pytest.approx(b_[399], abs=1e-12)
-    # ... and is a loop: at 0 V its rising branch lies over 0.3 um (10 sigma) below its falling one
-    rising = float(np.interp(0.0, v_up, a_[400:500]))
-    falling = float(np.interp(0.0, v_dn[::-1], a_[500:600][::-1]))
-    assert falling - rising > 0.3
+    # a minor loop from a turning point closes there and leaves no trace (1e-12 um): return-point memory (relays);
+    # it is a loop: at 0 V its rising branch lies over 0.3 um below its falling one (10 sigma);
     # rate independent: the drive played on another time grid (every sample twice) reads the same at the same drive
-    v = e["drive"][:4000]
-    np.testing.assert_array_equal(m53.core_reading(e, np.repeat(v, 2))[::2], m53.core_reading(e, v))
+    _relay_core(lambda v: m53.core_reading(e, v), e["drive"], 0.3)
     for seed in (0, 1, 2):
         rec = _rec(CLEAN, seed)
         # a PI model of 12 plays fitted by NNLS leaves 1.0 ... 2.0 sigma RMS (measured 1.49 ... 1.70) and at most 12
