@@ -12,7 +12,7 @@ from .record import caution, quiet_caution, start_caution
 from .preisach_core import describe as describe_preisach_core
 from .signatures import SHIFT_OR_LAG
 
-SCHEMA_VERSION = 28
+SCHEMA_VERSION = 29
 
 
 def _jsonable(x):

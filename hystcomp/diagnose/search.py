@@ -171,8 +171,12 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
         if taken is not None:
             finer = at_base
             ctx, vp, cur, start_ev = taken
+    # creep back (the output sagging against each step) only where the record does it: the base
+    # model holds still while the input does, so its residual's relaxation in the holds is the
+    # record's own; a short lag of that form is a rate term, and creep on is the usual sign
+    back = bool(first_ev.get("creep", {}).get("present") and first_ev["creep"].get("relaxation_per_step", 0.0) < 0)
     candidates = [cls for cls in PARTS.values() if cls.effect in effects and cls.effect not in untested
-                  and not (cls.needs_time and rec.dt is None)]
+                  and not (cls.needs_time and rec.dt is None) and (back or cls.kind != "creep_back")]
     steps, chosen, chosen_kinds, step_trials = [], [], [], []
     step_preds = [base_pt.prediction] + ([cur.prediction] if cur is not base_pt else [])
     stopped = "no candidate effect to try"

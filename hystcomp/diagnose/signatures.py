@@ -349,7 +349,9 @@ def evidence(rec, e, pred, sigma, only=None):
             # give one degree of freedom, and their standard error says little)
             stat = abs(float(coef[0])) / sigma
             thr = max(0.3, _t_quantile(dof) * se / sigma)
-            put("creep", sig, stat, round(thr, 4), holds=len(moved))
+            # signed, in noise floors: > 0 on with the step (creep), < 0 back against it
+            put("creep", sig, stat, round(thr, 4), holds=len(moved),
+                relaxation_per_step=round(float(coef[0]) / sigma, 4))
 
     if only is None or only in ('drift', 'gain_drift'):
         # -- drift / gain drift: slow trend in time beyond static functions of the input

@@ -144,8 +144,9 @@ def start_or_trend_revised(best, tried, margin, rms_val):
 def creep_or_trend(kind, ok, ambiguous):
     """The part to add at a step, between a drift and creep (see the module
     docstring): creep when the step chose a drift by its held-out gain and
-    the creep part ``creep_lags`` passed every acceptance rule at the step
-    with a held-out gain of at least ``1 - ambiguous`` times the best.
+    a creep part (``creep_lags``, or ``creep_back`` where it is tried) passed
+    every acceptance rule at the step with a held-out gain of at least
+    ``1 - ambiguous`` times the best.
 
     Parameters
     ----------
@@ -161,7 +162,7 @@ def creep_or_trend(kind, ok, ambiguous):
     Returns
     -------
     kind : str
-        `kind`, or ``"creep_lags"``.
+        `kind`, or the best creep part's kind.
     why : dict or None
         When the choice changed: the part the held-out gain chose, the one
         taken, both held-out gains and the reason.
@@ -177,13 +178,14 @@ def creep_or_trend(kind, ok, ambiguous):
     if not ok or PARTS[kind].effect != "drift":
         return kind, None
     top = ok[0][0]
-    creep = [j for j in ok if j[1] == "creep_lags" and j[0] >= (1.0 - ambiguous) * top]
+    creep = [j for j in ok if PARTS[j[1]].effect == "creep" and j[0] >= (1.0 - ambiguous) * top]
     if not creep:
         return kind, None
     mine = next(j for j in ok if j[1] == kind)
-    why = {"held_out_chose": kind, "taken": "creep_lags",
-           "held_out_gain_noise_variances": {kind: round(mine[0], 3), "creep_lags": round(creep[0][0], 3)},
+    taken = creep[0][1]
+    why = {"held_out_chose": kind, "taken": taken,
+           "held_out_gain_noise_variances": {kind: round(mine[0], 3), taken: round(creep[0][0], 3)},
            "reason": ("creep and a drift gain alike on the held-out part; creep draws the slow motion from the "
                       "input's own steps, a drift from time alone (a broken line in time can draw creep's "
                       "relaxations too), so the near tie goes to creep")}
-    return "creep_lags", why
+    return taken, why

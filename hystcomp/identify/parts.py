@@ -53,7 +53,7 @@ importing this module registers every built-in part, in one place.
 from .part_base import PARTS, SLOTS, Context, Parameter, Part, register  # noqa: F401
 from .parts_core import (ActivatedPlays, Asymmetry, InitialState, LevelThresholds, Offset, PICore,  # noqa: F401
                          RateThresholds, RingingPreload, Saturation, StaircasePreload, ViscousPlays)
-from .parts_dynamics import (Creep, Delay, DriftingDelay, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
+from .parts_dynamics import (BackCreep, Creep, Delay, DriftingDelay, GainDrift, InputLag, OutputCubic, OutputHinge,  # noqa: F401
                              OutputLag, OutputQuadratic, OutputResonance, RateTerm, SlewLimit, SlowGainDrift)
 from .parts_drift import Drift, EventDrift, SensorDrift, SlowDrift  # noqa: F401 (registers right after parts_dynamics)
 from .parts_mount import MountRecoil  # noqa: F401
@@ -62,6 +62,6 @@ from .parts_output import OutputClip, OutputAlgebraic, OutputTanh  # noqa: F401
 
 __all__ = ["Parameter", "Context", "Part", "PICore", "Offset", "Delay", "DriftingDelay", "InputLag", "SlewLimit", "RateThresholds", "ViscousPlays", "ActivatedPlays",
            "LevelThresholds",
-           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "MountRecoil", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+           "Asymmetry", "Saturation", "InitialState", "RingingPreload", "StaircasePreload", "OutputLag", "OutputResonance", "MountRecoil", "GainDrift", "SlowGainDrift", "Creep", "BackCreep", "RateTerm",
            "Drift", "SlowDrift", "EventDrift", "SensorDrift", "OutputQuadratic", "OutputExponentialSlope", "OutputCubic", "OutputHinge", "OutputClip", "OutputTanh",
            "OutputAlgebraic", "register", "PARTS"]

@@ -11,7 +11,7 @@ from ..effects import LinearStage, lag_bank
 from ._part_kernels import drifting_delay, fractional_delay, slew_limit
 from .part_base import Context, Parameter, Part, creep_time_range, register  # noqa: F401 (Context: the examples)
 
-__all__ = ["Delay", "DriftingDelay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "RateTerm",
+__all__ = ["Delay", "DriftingDelay", "InputLag", "SlewLimit", "OutputLag", "OutputResonance", "GainDrift", "SlowGainDrift", "Creep", "BackCreep", "RateTerm",
            "OutputQuadratic", "OutputCubic", "OutputHinge"]
 
 
@@ -461,6 +461,53 @@ class Creep(Part):
 
     def describe(self, values):
         return {"part": self.description}
+
+
+@register
+class BackCreep(Creep):
+    """Creep back: after each step the output relaxes *against* it, on time
+    constants of seconds, ``y = h + sum c_i (h - L_i[h]) + sum d_i (x - L_i[x])``
+    with ``c_i, d_i >= 0`` (the lags ``L_i`` as in :class:`Creep`: the output
+    overshoots at the step and sags back towards a lower relaxed gain).  A
+    viscoelastic coupling in series with a spring does this (a generalised
+    Maxwell solid under an imposed travel relaxes its force: Ferry 1980,
+    *Viscoelastic Properties of Polymers*, ch. 3), as does the back relaxation
+    of ionic polymer actuators (Nemat-Nasser & Wu 2003, J. Appl. Phys. 93,
+    5255).  Its time constants start at four times the rate term's longest
+    (:class:`RateTerm`): a fast lag of this form, ``x - L[x] = tau L[dx/dt]``,
+    is a rate term.  No nonlinear parameter.  The diagnosis tries it only
+    where the residual relaxes against the steps into the holds
+    (``relaxation_per_step < 0`` in the creep signature).
+
+    Examples
+    --------
+    >>> ctx = Context(np.r_[np.zeros(10), np.ones(990)], 0.1, 0.0, 1.0, 100.0)
+    >>> cols, lower, upper, names = BackCreep().columns({}, ctx)
+    >>> bool(cols[10, 0] > 0.9 and cols[-1, 0] < cols[10, 0]), names[0]
+    (True, 'creep_back_input_10s')
+    """
+
+    kind = "creep_back"
+    order = 11
+    description = "creep back (the output relaxes against each step: lags of the input and hysteresis output)"
+
+    def time_constants(self, ctx):
+        lo, hi = creep_time_range(ctx)
+        lo = min(max(lo, 4.0 * _lag_bounds(ctx)[1]), hi / 10.0)
+        m = max(3, int(round(np.log10(hi / lo) * 2)) + 1)
+        return np.geomspace(lo, hi, m)
+
+    def columns(self, values, ctx):
+        tau = self.time_constants(ctx)
+        X = ctx.x[:, None] - lag_bank(ctx.x, tau, ctx.dt, state=np.full(tau.size, ctx.x[0]))[0]
+        names = [f"creep_back_input_{t:.3g}s" for t in tau]
+        if self.driver is not None:
+            h = self._driver_output(ctx)
+            Y = h[:, None] - lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0]
+            X = np.column_stack([X, Y])
+            names += [f"creep_back_output_{t:.3g}s" for t in tau]
+        k = X.shape[1]
+        return X, np.zeros(k), np.full(k, np.inf), names
 
 
 @register

@@ -120,7 +120,7 @@ class _Stepper:
         for p in st.parts:
             if p.slot != "additive":
                 continue
-            if p.kind == "creep_lags":
+            if p.kind in ("creep_lags", "creep_back"):
                 tau = p.time_constants(ctx)
                 m = tau.size
                 a = np.exp(-ctx.dt / tau)
@@ -131,7 +131,9 @@ class _Stepper:
                     w_out = theta[j:j + m]
                     j += m
                     driver = _Stepper(p.driver, n)
-                self.creep.append((a, w_in, w_out, driver))
+                # creep back: the same lags, their complements (x - L, h - L) as columns
+                sign = -1.0 if p.kind == "creep_back" else 1.0
+                self.creep.append((a, sign * w_in, sign * w_out, driver, float(w_in.sum()) if sign < 0 else 0.0))
             elif isinstance(p, _OutputBend):      # a bend of the driving output: its own shape
                 self.bends.append((p, vals.get(p.kind, {}), float(theta[j]), _Stepper(p.driver, n)))
                 j += 1
@@ -215,11 +217,11 @@ class _Stepper:
             h = X @ C + D * h
         u = h + self.known[k]
         new_in, new_out, drv_out = [], [], []
-        for i, (a, w_in, w_out, driver) in enumerate(self.creep):
+        for i, (a, w_in, w_out, driver, direct) in enumerate(self.creep):
             L = self.lag_in[i]
             L = np.broadcast_to(x[:, None], (x.size, a.size)) if L is None else L[None, :]
             Lin = a * L + (1.0 - a) * x[:, None]
-            u = u + Lin @ w_in
+            u = u + Lin @ w_in + direct * x
             new_in.append(Lin)
             if driver is not None:
                 h = driver.output(x)
@@ -243,7 +245,7 @@ class _Stepper:
             for i, X in enumerate(new_filter):
                 if X is not None:
                     self.filter_state[i] = X[0].copy()
-            for i, (a, w_in, w_out, driver) in enumerate(self.creep):
+            for i, (a, w_in, w_out, driver, _) in enumerate(self.creep):
                 self.lag_in[i] = new_in[i][0].copy()
                 if driver is not None:
                     driver.output(x, commit=True)
