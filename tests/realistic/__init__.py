@@ -260,6 +260,15 @@ the hydride's on its sloping branch, the lattice's swelling and the gas's pressu
 capacitive gauge; at rest in the state the controller's decaying pressure cycling leaves before every record but the
 initial-state case's; a PI model of 12 plays fitted by NNLS leaves 1.49 ... 1.70 sigma RMS on its clean record (at most
 6.9 ... 9.2 sigma), measured in tests/test_realistic_holdout53.py.
+:data:`HOLDOUT54` (``cases_holdout54.py``) was written after HOLDOUT53 was measured, by a session that did not read how
+the diagnosis decides; it has not been measured yet and is kept out of :data:`ALL` until it is. Its core is a
+spin-crossover composite strip: crystallites of an iron(II) triazole molecular alloy in a polyurethane matrix, its
+temperature set from the drive, read by an LVDT: 3000 classes, each a cooperative Slichter-Drickamer body on the low- or
+the high-spin branch of its free energy's minimum, switching at its spinodals (each branch bending with the
+temperature), their T_half normal and their interaction log-normal, the strip's length taking the high-spin lattice's
+volume and expansion; at rest in the state the controller's decaying thermal conditioning leaves before every record but
+the initial-state case's; a PI model of 12 plays fitted by NNLS leaves 1.17 ... 1.41 sigma RMS on its clean record (at
+most 6.7 ... 6.8 sigma), measured in tests/test_realistic_holdout54.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -317,6 +326,7 @@ from .cases_holdout50 import HOLDOUT50  # noqa: F401
 from .cases_holdout51 import HOLDOUT51  # noqa: F401
 from .cases_holdout52 import HOLDOUT52  # noqa: F401
 from .cases_holdout53 import HOLDOUT53  # noqa: F401
+from .cases_holdout54 import HOLDOUT54  # noqa: F401  (not in ALL until measured)
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -333,4 +343,5 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT27", "HOLDOUT28", "HOLDOUT29", "HOLDOUT30", "HOLDOUT31", "HOLDOUT32",
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
            "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "HOLDOUT46", "HOLDOUT47", "HOLDOUT48",
-           "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "HOLDOUT52", "HOLDOUT53", "ALL"]
+           "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "HOLDOUT52", "HOLDOUT53", "HOLDOUT54",
+           "ALL"]
