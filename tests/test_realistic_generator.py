@@ -123,7 +123,11 @@ def test_sets_are_disjoint_and_large_enough():
 OWN_SLOW_FILE = tuple(f"holdout{k}_" for k in range(10, 100))
 
 
-@pytest.mark.parametrize("name", sorted(ALL))
+#: HOLDOUT10 onwards: built here only with ``-m slow`` (their own slow files build every case at three seeds and check
+#: the same; the default suite builds each set's clean record in tests/test_diagnose_realistic_sample.py): about 250
+#: CPU-seconds less in CI (round 56: 0.53 s a case on 440 cases, against 0.11 s on the 115 earlier ones)
+@pytest.mark.parametrize("name", [pytest.param(n, marks=pytest.mark.slow) if n.startswith(OWN_SLOW_FILE) else n
+                                  for n in sorted(ALL)])
 def test_every_case_builds_a_finite_record(name):
     cases = ALL
     r = cases[name](0)
