@@ -6,8 +6,8 @@ benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sampl
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (60 clean records in all; HOLDOUT53's took 5.7 s in round 55's measurement). 87 runs at seed 0; 78 were right in
-round 55 (77 in round 54, 75 in round 53)
+other set (61 clean records in all; HOLDOUT54's took 7.5 s in round 56's measurement). 88 runs at seed 0; 78 were right in
+round 56 and in round 55 (77 in round 54, 75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -44,7 +44,9 @@ gained 1.30 and 0.54; HOLDOUT52's in round 54: a paraffin-in-silica phase-change
 their walls and freeze through their mouths, an asymmetry named at seed 0 (3.44 noise variances), `explained`, counted
 wrong, see ASYMMETRIC_CLEAN; HOLDOUT53's in round 55: a metal-hydride cell whose particles switch between their
 absorption and desorption plateaus, `explained` with nothing named at seed 0 (an asymmetry at seeds 1 and 2, see
-ASYMMETRIC_CLEAN)). Since
+ASYMMETRIC_CLEAN); HOLDOUT54's in round 56: a spin-crossover strip whose crystallites switch as cooperative
+Slichter-Drickamer bodies, a drift of events named at seed 0 (0.79 noise variances), `explained`, counted wrong, see
+DRIFTING_CLEAN). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -83,8 +85,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 87
-    assert sum(r["clean"] for r in rows) == 60
+    assert len(rows) == 88
+    assert sum(r["clean"] for r in rows) == 61
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -96,7 +98,7 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 78/87 right in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
+    # 78/88 right in round 56 (HOLDOUT54's clean strip wrong at seed 0: a drift); 78/87 in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
     # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
     # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
     # asymmetries;
@@ -109,7 +111,8 @@ def test_right_verdict_no_worse_than_measured(rows):
 
 
 def test_no_effect_named_on_clean_records(rows):
-    # beside the known exceptions (NOT_PI_CLEAN, SATURATING_CLEAN, ASYMMETRIC_CLEAN: see test_diagnose_realistic.py)
+    # beside the known exceptions (NOT_PI_CLEAN, SATURATING_CLEAN, ASYMMETRIC_CLEAN, DRIFTING_CLEAN: see
+    # test_diagnose_realistic.py)
     named = _named_on_clean(rows)
     assert not named, _table(named)
 
@@ -117,7 +120,8 @@ def test_no_effect_named_on_clean_records(rows):
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
                                         "stiffening Gent rubber pads at seed 0 (round 36, fresh and as committed; "
                                         "3.50 noise variances) and an asymmetry on HOLDOUT52's phase-change film "
-                                        "(round 54, 3.44); HOLDOUT36's and HOLDOUT40's small saturations "
+                                        "(round 54, 3.44) and a drift on HOLDOUT54's spin-crossover strip (round 56, 0.79); "
+                                        "HOLDOUT36's and HOLDOUT40's small saturations "
                                         "are tentative since round 47, HOLDOUT49's and HOLDOUT51's first asymmetries "
                                         "(1.30 and 0.54) since round 54")
 def test_no_effect_named_on_any_clean_record(rows):

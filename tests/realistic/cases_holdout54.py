@@ -1,5 +1,5 @@
-"""The HOLDOUT54 set: written after HOLDOUT53 was measured, by a session that did not read how the diagnosis decides;
-not yet measured, kept out of ALL.
+"""The HOLDOUT54 set: written after HOLDOUT53 was measured, by a session that did not read how the diagnosis decides,
+and run once for round 56's measurement (15 of 30 runs right on commit abb8290); part of ALL since.
 
 Mechanisms and signals that the other sets do not have (the laws are in :mod:`.mechanisms54`, the signals in
 :mod:`.signals54`, each beside its source; the citations were written from memory, as they say). Every core is a
