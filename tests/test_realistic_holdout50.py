@@ -53,6 +53,7 @@ from realistic import mechanisms50 as m50
 from realistic import signals50 as s50
 from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
                                       _assert_spans_and_rates, _linear_misfit, _rms)
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import (beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms,
                                   read_late_misfit as _read_late_misfit)
 
@@ -137,17 +138,7 @@ def test_reach_and_programmes():
     np.testing.assert_allclose(sp[1:-1], (20 * s * (1 - s) ** 3)[1:-1], rtol=0, atol=1e-6)
     assert sp[1:-1].max() == pytest.approx(s50.PEAK_SPEED, rel=1e-5) and s[1:-1][np.argmax(sp[1:-1])] == 0.25
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
-    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
-    for tt in np.linspace(-0.5, 3.0, 71):
-        if tt <= 0.0:
-            ref = 0.0
-        elif tt >= 2.5:
-            ref = -1.0
-        else:
-            i = max(k for k in range(3) if kn[k][0] <= tt)
-            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
-            ref = x0 + (x1 - x0) * float(s50.reach((tt - t0) / (t1 - t0)))
-        assert float(s50.knots_at(np.array([tt]), kn)[0]) == pytest.approx(ref, abs=1e-12)
+    _knots_evaluator(s50.reach, s50.knots_at)
     # never-still programmes: no two knots alike in a row
     rng = np.random.default_rng(7)
     for gen in (s50.xylophone, s50.volleyball_pepper, s50.shadow_boxing):

@@ -56,6 +56,7 @@ from realistic import cases_holdout52 as c52
 from realistic import mechanisms52 as m52
 from realistic import signals52 as s52
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import assert_relay_core as _relay_core, holds as _holds, pi_fit_rms as _pi_fit_rms
 from test_realistic_holdout50 import _big, _full_both_ways, _lopsided
 
@@ -119,17 +120,7 @@ def test_reach_and_programmes():
     fine = np.linspace(0.3, 0.45, 150001)
     assert fine[np.argmax(s52.reach_speed(fine))] == pytest.approx(1.4 / 3.8, abs=1e-5)
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
-    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
-    for tt in np.linspace(-0.5, 3.0, 71):
-        if tt <= 0.0:
-            ref = 0.0
-        elif tt >= 2.5:
-            ref = -1.0
-        else:
-            i = max(k for k in range(3) if kn[k][0] <= tt)
-            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
-            ref = x0 + (x1 - x0) * float(s52.reach((tt - t0) / (t1 - t0)))
-        assert float(s52.knots_at(np.array([tt]), kn)[0]) == pytest.approx(ref, abs=1e-12)
+    _knots_evaluator(s52.reach, s52.knots_at)
     rng = np.random.default_rng(7)
     # the hang glider never still; the timpanist's tuning within 0.05 for its first 14 s; the pepper mill's twists
     # alternate; the unipolar programmes within 0 ... 1

@@ -55,6 +55,7 @@ from realistic import cases_holdout53 as c53
 from realistic import mechanisms53 as m53
 from realistic import signals53 as s53
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import assert_relay_core as _relay_core, beyond_gain_and_offset as _fit, holds as _holds
 from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
@@ -135,17 +136,7 @@ def test_reach_and_programmes():
     assert fine[np.argmax(s53.reach_speed(fine))] == pytest.approx(0.5, abs=1e-5)
     assert float(s53.reach_speed(0.5)) == pytest.approx(1.875, abs=1e-12)
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
-    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
-    for tt in np.linspace(-0.5, 3.0, 71):
-        if tt <= 0.0:
-            ref = 0.0
-        elif tt >= 2.5:
-            ref = -1.0
-        else:
-            i = max(k for k in range(3) if kn[k][0] <= tt)
-            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
-            ref = x0 + (x1 - x0) * float(s53.reach((tt - t0) / (t1 - t0)))
-        assert float(s53.knots_at(np.array([tt]), kn)[0]) == pytest.approx(ref, abs=1e-12)
+    _knots_evaluator(s53.reach, s53.knots_at)
     rng = np.random.default_rng(7)
     # the baton never still; the dial's search within 0.04 before its first station; the unipolar programmes within 0
     # ... 1 and reaching 1

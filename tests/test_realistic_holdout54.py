@@ -59,6 +59,7 @@ from realistic import cases_holdout54 as c54
 from realistic import mechanisms54 as m54
 from realistic import signals54 as s54
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import assert_relay_core as _relay_core, beyond_gain_and_offset as _fit, holds as _holds
 from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
@@ -137,17 +138,7 @@ def test_reach_and_programmes():
     np.testing.assert_allclose(sp, s54.reach_speed(si), rtol=0, atol=1e-6)
     assert float(s54.reach_speed(0.5)) == pytest.approx(2.0, abs=1e-12)
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
-    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
-    for tt in np.linspace(-0.5, 3.0, 71):
-        if tt <= 0.0:
-            ref = 0.0
-        elif tt >= 2.5:
-            ref = -1.0
-        else:
-            i = max(k for k in range(3) if kn[k][0] <= tt)
-            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
-            ref = x0 + (x1 - x0) * float(s54.reach((tt - t0) / (t1 - t0)))
-        assert float(s54.knots_at(np.array([tt]), kn)[0]) == pytest.approx(ref, abs=1e-12)
+    _knots_evaluator(s54.reach, s54.knots_at)
     rng = np.random.default_rng(7)
     # the unicyclist never still; the marshaller's wand within 0.04 for its first 14 s; the unipolar programmes within
     # 0 ... 1 and reaching 1

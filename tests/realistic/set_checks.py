@@ -85,3 +85,21 @@ def assert_relay_core(reading, drive, min_gap):
     assert falling - rising > min_gap
     v = drive[:4000]
     np.testing.assert_array_equal(reading(np.repeat(v, 2))[::2], reading(v))
+
+
+def assert_knots_evaluator(reach, knots_at):
+    """A programme's knot evaluator ``knots_at(t, knots)`` against a direct search of its knots, each move between
+    two knots following ``reach`` (0 ... 1 over the move): on 71 times from before the first knot to after the last,
+    within 1e-12 (rounding), the first knot's value before it and the last's after it."""
+    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
+    for tt in np.linspace(-0.5, 3.0, 71):
+        if tt <= 0.0:
+            ref = 0.0
+        elif tt >= 2.5:
+            ref = -1.0
+        else:
+            i = max(k for k in range(3) if kn[k][0] <= tt)
+            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
+            ref = x0 + (x1 - x0) * float(reach((tt - t0) / (t1 - t0)))
+        got = float(knots_at(np.array([tt]), kn)[0])
+        assert abs(got - ref) <= 1e-12, (tt, got, ref)
