@@ -57,6 +57,8 @@ def test_a_pad_that_relaxes_back_is_named_creep(sagging):
     sig = rep.steps[0]["evidence"]["signature"]
     assert sig["present"] and sig["relaxation_per_step"] < 0 and sig["statistic"] == -sig["relaxation_per_step"]
     assert rep.steps[0]["evidence"]["held_out_gain_noise_variances"] > 10.0
+    # the report says which way the residual relaxed in the holds
+    assert "it relaxes back, against the step" in rep.report()
 
 
 def test_the_model_reproduces_the_reported_rms_and_inverts(sagging):
@@ -87,7 +89,7 @@ def test_creep_on_takes_the_creep_part_and_never_tries_creep_back():
     # creep back is not even a candidate: the base model's residual relaxes with the steps
     assert all("creep_back" not in s["evidence"]["candidates"] for s in rep.steps)
     sig = [s for s in rep.steps if s["effect"] == "creep"][0]["evidence"]["signature"]
-    assert sig["relaxation_per_step"] > 0
+    assert sig["relaxation_per_step"] > 0 and "it relaxes on, with the step" in rep.report()
 
 
 def test_creep_back_starts_above_the_rate_terms_time_constants():

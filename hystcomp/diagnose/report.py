@@ -487,7 +487,11 @@ class Diagnosis:
                 shape += f" (taken as {rv['effect_before']}, replaced in the revision)"
             lines.append(f"step {i}: {st['effect']}{shape} -- {ext['part']}; held-out RMS {st['rms_before']:.4g} -> "
                          f"{st['rms_after']:.4g} ({st['rms_after'] / s:.2f} x noise floor)")
-            lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}")
+            way = sig.get("relaxation_per_step")
+            # creep's hold test is signed: which way the residual relaxed, on with the steps or back against them
+            way = "" if way is None else (
+                "; it relaxes on, with the step" if way > 0 else "; it relaxes back, against the step")
+            lines.append(f"  signature: {sig['signature']}: {sig['statistic']:.3g} > {sig['threshold']:.3g}{way}")
             if st["evidence"].get("instead_of_one_map"):
                 lines.append("  instead of " + st["evidence"]["instead_of_one_map"])
             if st["evidence"].get("paired"):
