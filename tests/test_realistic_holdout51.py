@@ -52,6 +52,7 @@ from realistic import mechanisms51 as m51
 from realistic import signals51 as s51
 from test_realistic_generator import (_assert_drives_start_at_zero, _assert_measured_set, _assert_set_layout,
                                       _assert_spans_and_rates, _linear_misfit, _rms)
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms
 from test_realistic_holdout50 import _big, _full_both_ways
 
@@ -141,17 +142,7 @@ def test_reach_and_programmes():
     assert s51.reach_speed(fine).max() == pytest.approx(s51.PEAK_SPEED, rel=1e-4)
     assert fine[np.argmax(s51.reach_speed(fine))] == pytest.approx(math.exp(s51.MU - s51.SIGMA ** 2), abs=1e-5)
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
-    kn = [(0.0, 0.0), (1.0, 0.5), (1.5, 0.5), (2.5, -1.0)]
-    for tt in np.linspace(-0.5, 3.0, 71):
-        if tt <= 0.0:
-            ref = 0.0
-        elif tt >= 2.5:
-            ref = -1.0
-        else:
-            i = max(k for k in range(3) if kn[k][0] <= tt)
-            (t0, x0), (t1, x1) = kn[i], kn[i + 1]
-            ref = x0 + (x1 - x0) * law.cdf((tt - t0) / (t1 - t0)) / law.cdf(1.0)
-        assert float(s51.knots_at(np.array([tt]), kn)[0]) == pytest.approx(ref, abs=1e-12)
+    _knots_evaluator(lambda u: law.cdf(u) / law.cdf(1.0), s51.knots_at)
     # never-still programmes: no two knots alike in a row
     rng = np.random.default_rng(7)
     for gen in (s51.cross_country_skier, s51.hedge_trimmer):

@@ -176,7 +176,7 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     # record's own; a short lag of that form is a rate term, and creep on is the usual sign
     back = bool(first_ev.get("creep", {}).get("present") and first_ev["creep"].get("relaxation_per_step", 0.0) < 0)
     candidates = [cls for cls in PARTS.values() if cls.effect in effects and cls.effect not in untested
-                  and not (cls.needs_time and rec.dt is None) and (back or cls.kind != "creep_back")]
+                  and not (cls.needs_time and rec.dt is None) and (back or not getattr(cls, "back", False))]
     steps, chosen, chosen_kinds, step_trials = [], [], [], []
     step_preds = [base_pt.prediction] + ([cur.prediction] if cur is not base_pt else [])
     stopped = "no candidate effect to try"

@@ -435,27 +435,38 @@ class Creep(Part):
     def attach(self, model):
         self.driver = model
 
+    #: creep back (:class:`BackCreep`): the lags' complements, ``x - L_i[x]`` and ``h - L_i[h]``
+    back = False
+
+    def _shortest(self, ctx, lo, hi):
+        """The shortest time constant of the grid, given the creep range's ``(lo, hi)``."""
+        return lo
+
     def time_constants(self, ctx):
         # up to the record's length: logarithmic and power-law creep relax on every time
         # scale the record covers (Jung & Gweon 2000), and a bank that stops at T/4 leaves
         # their slow part as a trend (measured: 1.5-2.0 noise floors left on log creep)
         lo, hi = creep_time_range(ctx)
+        lo = self._shortest(ctx, lo, hi)
         m = max(3, int(round(np.log10(hi / lo) * 2)) + 1)
         return np.geomspace(lo, hi, m)
 
     def columns(self, values, ctx):
         tau = self.time_constants(ctx)
         X = lag_bank(ctx.x, tau, ctx.dt, state=np.full(tau.size, ctx.x[0]))[0]
-        names = [f"creep_input_{t:.3g}s" for t in tau]
+        if self.back:
+            X = ctx.x[:, None] - X
+        names = [f"{self.kind.replace('_lags', '')}_input_{t:.3g}s" for t in tau]
         if self.driver is not None:
             h = self._driver_output(ctx)
             # lags minus the driver itself: only the creeping part, no copy of the driver.  After a
             # step of the driver a lag minus the driver rises back to 0 from minus the step, so a
             # coefficient >= 0 keeps the output moving in the step's direction (Kelvin-Voigt
-            # creep: y = h + sum c_i L_i[h] = (1 + sum c_i) h + sum c_i (L_i[h] - h))
+            # creep: y = h + sum c_i L_i[h] = (1 + sum c_i) h + sum c_i (L_i[h] - h)); creep
+            # back takes the driver minus the lags, and the output sags back after the step
             Y = lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0] - h[:, None]
-            X = np.column_stack([X, Y])
-            names += [f"creep_output_{t:.3g}s" for t in tau]
+            X = np.column_stack([X, -Y if self.back else Y])
+            names += [f"{self.kind.replace('_lags', '')}_output_{t:.3g}s" for t in tau]
         k = X.shape[1]
         return X, np.zeros(k), np.full(k, np.inf), names
 
@@ -489,25 +500,11 @@ class BackCreep(Creep):
 
     kind = "creep_back"
     order = 11
+    back = True
     description = "creep back (the output relaxes against each step: lags of the input and hysteresis output)"
 
-    def time_constants(self, ctx):
-        lo, hi = creep_time_range(ctx)
-        lo = min(max(lo, 4.0 * _lag_bounds(ctx)[1]), hi / 10.0)
-        m = max(3, int(round(np.log10(hi / lo) * 2)) + 1)
-        return np.geomspace(lo, hi, m)
-
-    def columns(self, values, ctx):
-        tau = self.time_constants(ctx)
-        X = ctx.x[:, None] - lag_bank(ctx.x, tau, ctx.dt, state=np.full(tau.size, ctx.x[0]))[0]
-        names = [f"creep_back_input_{t:.3g}s" for t in tau]
-        if self.driver is not None:
-            h = self._driver_output(ctx)
-            Y = h[:, None] - lag_bank(h, tau, ctx.dt, state=np.full(tau.size, h[0]))[0]
-            X = np.column_stack([X, Y])
-            names += [f"creep_back_output_{t:.3g}s" for t in tau]
-        k = X.shape[1]
-        return X, np.zeros(k), np.full(k, np.inf), names
+    def _shortest(self, ctx, lo, hi):
+        return min(max(lo, 4.0 * _lag_bounds(ctx)[1]), hi / 10.0)
 
 
 @register

@@ -31,7 +31,7 @@ import math
 import numpy as np
 
 from ._part_kernels import activated_overstress
-from .parts_dynamics import _OutputBend
+from .parts_dynamics import Creep, _OutputBend
 
 __all__ = ["PartsInverse", "NOT_CAUSAL"]
 
@@ -120,7 +120,7 @@ class _Stepper:
         for p in st.parts:
             if p.slot != "additive":
                 continue
-            if p.kind in ("creep_lags", "creep_back"):
+            if isinstance(p, Creep):
                 tau = p.time_constants(ctx)
                 m = tau.size
                 a = np.exp(-ctx.dt / tau)
@@ -132,7 +132,7 @@ class _Stepper:
                     j += m
                     driver = _Stepper(p.driver, n)
                 # creep back: the same lags, their complements (x - L, h - L) as columns
-                sign = -1.0 if p.kind == "creep_back" else 1.0
+                sign = -1.0 if p.back else 1.0
                 self.creep.append((a, sign * w_in, sign * w_out, driver, float(w_in.sum()) if sign < 0 else 0.0))
             elif isinstance(p, _OutputBend):      # a bend of the driving output: its own shape
                 self.bends.append((p, vals.get(p.kind, {}), float(theta[j]), _Stepper(p.driver, n)))
