@@ -126,3 +126,33 @@ def test_the_blocks_are_taken_for_a_start_the_end_cannot_test():
                      (end, _split("unexplained", ["initial_state"], 1.2, blocks=True)),
                      (end, _split("explained", ["asymmetry"], 0.98, blocks=True))):
         assert choose_split(end, blk, said.append)["other_split"]["held_out"] == "blocks"
+
+
+def test_the_blocks_are_taken_for_a_start_both_found_but_only_they_explain():
+    from hystcomp.diagnose.splits import choose_split, start_found_by_both
+
+    said = []
+    # the end found an initial state (tentative beside a misfit out of the vocabulary)
+    # and left 8.3 noise floors; the blocks name it and explain the record (HOLDOUT52's
+    # freezer night, whose end held out inner loops the end's fit never saw)
+    end = _split("unexplained", [], 8.26, remaining=("out_of_vocabulary",))
+    end["tentative"] = ["initial_state", "drift"]
+    blocks = _split("explained", ["initial_state"], 1.43, blocks=True)
+    assert start_found_by_both(end, blocks)
+    chosen = choose_split(end, blocks, said.append)
+    assert chosen["verdict"] == "explained" and chosen["effects"] == ["initial_state"]
+    why = chosen["other_split"]["why"]
+    assert chosen["other_split"]["held_out"] == "end" and "8.26" in why and "1.43" in why
+    assert said[-1].startswith("taken: ")
+    # named at the end, not only tentative, counts as found
+    named = _split("unexplained", ["initial_state", "rate_dependence"], 1.93)
+    assert choose_split(named, blocks, said.append)["other_split"]["held_out"] == "end"
+    # not when the end found no initial state, when the blocks name none or do not explain
+    # the record, or when they leave more floors than the end
+    plain = _split("unexplained", ["asymmetry"], 2.0)
+    for e, blk in ((plain, blocks),
+                   (end, _split("explained", ["asymmetry"], 1.2, blocks=True)),
+                   (end, _split("unexplained", ["initial_state"], 1.6, blocks=True)),
+                   (named, _split("explained", ["initial_state"], 2.5, blocks=True))):
+        assert not start_found_by_both(e, blk)
+        assert choose_split(e, blk, said.append)["other_split"]["held_out"] == "blocks"
