@@ -50,15 +50,18 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1306/1695 (77.1 %) over the fifty-five sets in round 56
-# (1291/1665 over the fifty-four earlier sets: round 56's creep back made five runs of HOLDOUT52's and HOLDOUT53's
+# The issue's criterion is over three seeds: 1324/1725 (76.8 %) over the fifty-six sets in round 57
+# (1308/1695 over the fifty-five earlier sets: round 57's blocks split for an initial state both splits find made
+# HOLDOUT52's freezer night right at seeds 1 and 2 and HOLDOUT12's pair at seed 2, and HOLDOUT12's pair at seed 1,
+# measured again, went wrong; HOLDOUT55 16/30 when fresh and as committed: a P(VDF-TrFE) unimorph; 1306 in round 56;
+# 1291/1665 over the fifty-four earlier sets: round 56's creep back made five runs of HOLDOUT52's and HOLDOUT53's
 # creep records right and one of HOLDOUT48's drift records wrong; 1287 in round 55; HOLDOUT54 15/30 when fresh and
 # as committed: a spin-crossover strip; 1270/1635 over the fifty-three earlier sets: round 55's rule on creep beside a misfit out of the vocabulary made
 # three creep runs of HOLDOUT42 and HOLDOUT43 right; 1267 in round 54; HOLDOUT53 17/30 when fresh and as committed: a
 # metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 439/565 (77.7 %), 508.5 needed, so
+# open. At seed 0, as run here, 444/575 (77.2 %), 517.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -69,23 +72,24 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53) and 15/30 (HOLDOUT54)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54) and 16/30 (HOLDOUT55)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1306/1695 right over three seeds of the fifty-five sets "
-                                         "(77.1 %); at seed 0 439/565 (77.7 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1324/1725 right over three seeds of the fifty-six sets "
+                                         "(76.8 %); at seed 0 444/575 (77.2 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 439/565 right at seed 0 in round 56 (77.7 %; HOLDOUT54 4 of 10, round 56's creep back two more
-    # of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round 54); at least 429, ten runs of
+    # regression guard: 444/575 right at seed 0 in round 57 (77.2 %; HOLDOUT55 5 of 10; 439/565 in round 56, HOLDOUT54
+    # 4 of 10, round 56's creep back two more of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round
+    # 54); at least 434, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 565
-    assert right >= 429, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 575
+    assert right >= 434, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -95,7 +99,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 555 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 575 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -237,7 +241,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
                                         "every seed, on HOLDOUT53's metal-hydride cell at seeds 1 and 2; a drift on HOLDOUT54's "
-                                        "spin-crossover strip at seed 0 (since round 47 the small saturations of "
+                                        "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2 "
+                                        "(since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
 def test_no_effect_named_on_any_clean_record(rows):
@@ -289,8 +294,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 105/180 runs (33/60 at seed 0) of the combined "
-                                        "cases of the fifty-five sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 105/183 runs (33/61 at seed 0) of the combined "
+                                        "cases of the fifty-six sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -343,7 +348,9 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "dependence and a drift at seeds 0 and 1, and as an asymmetry, a rate dependence and creep at "
                                         "seed 2 (round 56); HOLDOUT54's quarter bridge's warm-up (a drift) beside its "
                                         "nonlinearity (an asymmetry): the asymmetry missed at seed 1 (a mount recoil named) "
-                                        "and named beside a saturation at seed 0; "
+                                        "and named beside a saturation at seed 0; HOLDOUT55's clamp's log creep "
+                                        "beside its film's alpha_c relaxation (a rate dependence): nothing named at "
+                                        "any seed, `unexplained` at 5.7-7.5 noise floors (round 57); "
                                         "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):

@@ -1,5 +1,5 @@
-"""The HOLDOUT55 set: written after HOLDOUT54 was measured, by a session that did not read how the diagnosis decides;
-not yet measured, kept out of ALL.
+"""The HOLDOUT55 set: written after HOLDOUT54 was measured, by a session that did not read how the diagnosis decides,
+and run once for round 57's measurement (16 of 30 runs right on commit 58bc36b); part of ALL since.
 
 Mechanisms and signals that the other sets do not have (the laws are in :mod:`.mechanisms55`, the signals in
 :mod:`.signals55`, each beside its source; the citations were written from memory, as they say). Every core is a
