@@ -156,3 +156,27 @@ def test_the_blocks_are_taken_for_a_start_both_found_but_only_they_explain():
                    (named, _split("explained", ["initial_state"], 2.5, blocks=True))):
         assert not start_found_by_both(e, blk)
         assert choose_split(e, blk, said.append)["other_split"]["held_out"] == "blocks"
+
+
+def test_the_blocks_are_taken_when_they_explain_the_record_with_what_the_end_named():
+    from hystcomp.diagnose.splits import blocks_explain_what_end_named, choose_split
+
+    said = []
+    # the end named a saturation and left 2.15 noise floors; the blocks explain the record
+    # with nothing named (HOLDOUT34's clean stage on stiffening pads at seed 2)
+    end = _split("unexplained", ["saturation"], 2.15)
+    blocks = _split("explained", [], 1.17, blocks=True)
+    assert blocks_explain_what_end_named(end, blocks)
+    chosen = choose_split(end, blocks, said.append)
+    assert chosen["verdict"] == "explained" and chosen["effects"] == []
+    assert "no effect the end did not name" in chosen["other_split"]["why"] and said[-1].startswith("taken: ")
+    # the same effects, or fewer, are taken; one the end did not name is not (HOLDOUT51's
+    # sigma-delta gauge: a rate dependence beside the delay, which the end did not need)
+    for eff, taken in ((["saturation"], True), (["saturation", "rate_dependence"], False), (["delay"], False)):
+        blk = _split("explained", eff, 1.2, blocks=True)
+        assert blocks_explain_what_end_named(end, blk) is taken
+        assert (choose_split(end, blk, said.append)["other_split"]["held_out"] == "end") is taken
+    # not when the blocks leave more floors, nor when they do not explain the record
+    for blk in (_split("explained", [], 2.5, blocks=True), _split("unexplained", [], 1.6, blocks=True)):
+        assert not blocks_explain_what_end_named(end, blk)
+        assert choose_split(end, blk, said.append)["verdict"] == "unexplained"

@@ -322,3 +322,21 @@ def test_on_a_record_explained_a_later_saturation_needs_ten_noise_variances():
     both = _run([_step("delay", 40.0), _step("asymmetry", 1.0), _step("saturation", 5.0)], "explained")
     assert both["effects"] == ["delay"] and both["tentative"] == ["asymmetry", "saturation"]
     assert both["stopped"].endswith("later steps gaining under 2.5 or 10 noise variances")
+
+
+def test_the_blocks_are_weighed_against_the_effects_the_end_would_name():
+    # round 57: the blocks may not add an effect to the end's; the end's small later steps are not its effects
+    from hystcomp.diagnose.splits import blocks_explain_what_end_named, choose_split
+    from test_diagnose_blocks import _split
+
+    end = _split("unexplained", ["asymmetry", "initial_state"], 2.0)
+    end["steps"] = [_step("asymmetry", 24.8), _step("initial_state", 0.54)]
+    end["ambiguous"], end["stopped"] = {}, "no remaining effect pays"
+    before = copy.deepcopy(end["steps"])
+    for named, taken in ((["asymmetry"], True), (["asymmetry", "initial_state"], False)):
+        blocks = _split("explained", named, 1.2, blocks=True)
+        assert blocks_explain_what_end_named(end, blocks) is taken
+    # the end's steps are weighed on a copy: left as they were
+    assert end["steps"] == before and end["effects"] == ["asymmetry", "initial_state"]
+    chosen = choose_split(end, _split("explained", ["asymmetry"], 1.2, blocks=True), lambda s: None)
+    assert chosen["verdict"] == "explained" and chosen["effects"] == ["asymmetry"]

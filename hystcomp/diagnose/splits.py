@@ -13,14 +13,16 @@ and :func:`choose_split` decides which diagnosis to report; the other is
 summarised (:func:`pass_summary`) under ``other_split`` with why it was or
 was not taken.  Round 22 added the blocks for drifts; round 34 the start
 that an end cannot test (:func:`start_left_to_blocks`); round 57 the start
-that the end found but could not explain (:func:`start_found_by_both`).
+that the end found but could not explain (:func:`start_found_by_both`) and,
+wider, a record the blocks explain with no effect the end did not name
+(:func:`blocks_explain_what_end_named`).
 """
 
 from .small_steps import small_later_steps
 from .symmetry import core_shape
 
 __all__ = ["INTERPOLATED", "blocks_may_tell", "pass_summary", "start_left_to_blocks", "start_found_by_both",
-           "choose_split"]
+           "blocks_explain_what_end_named", "choose_split"]
 
 #: effects of no set shape in time (broken lines in time, held at their last
 #: level past the fitted part): a held-out end tests them by extrapolation,
@@ -87,14 +89,50 @@ def start_found_by_both(end, blocks):
             and "initial_state" in blocks["effects"] and left_blocks < left_end)
 
 
+def _reported_effects(kw):
+    """The effects a search's result names once its small later steps are
+    made tentative (:func:`~hystcomp.diagnose.small_steps.small_later_steps`,
+    run on a copy: `kw` is left as it is)."""
+    probe = dict(kw, steps=[dict(st, evidence=dict(st["evidence"])) for st in kw.get("steps") or []],
+                 tentative=list(kw.get("tentative") or []), ambiguous=dict(kw.get("ambiguous") or {}),
+                 stopped=kw.get("stopped", ""))
+    return small_later_steps(probe, lambda s: None)["effects"]
+
+
+def blocks_explain_what_end_named(end, blocks):
+    """Whether the blocks explain a record that the end left unexplained,
+    with no effect the end did not name: the end's verdict is
+    ``unexplained``, the blocks' ``explained`` with fewer noise floors left,
+    and every effect the blocks name (once their small later steps are
+    tentative) the end names too.
+
+    The blocks are searched only when the end named no drift or gain drift,
+    so the end's model has no part that follows a time course of no set
+    shape; when its parts, fitted around five blocks spread over the
+    record, explain it and fitted with the end held out do not, the end
+    judged them on input history its fit did not hold, reversals or turning
+    points that only the end has (HOLDOUT52's freezer night, see
+    :func:`start_found_by_both`), or on what that fit left undetermined.  The effects stay the end's, or fewer:
+    the blocks may not add one (a drift or rate term that explains the
+    blocks and that the end did not need).  Round 57: on the committed runs
+    searched a second time on blocks, measured with the blocks alone, it
+    changed only runs whose answer was wrong or kept its effects (see
+    docs/diagnose_history.md)."""
+    left_end = end["rms_heldout"] / end["noise_floor"]
+    left_blocks = blocks["rms_heldout"] / blocks["noise_floor"]
+    return (end["verdict"] == "unexplained" and blocks["verdict"] == "explained" and left_blocks < left_end
+            and set(_reported_effects(blocks)) <= set(_reported_effects(end)))
+
+
 def choose_split(end, blocks, say):
     """The diagnosis of the two splits to report: the blocks' when they name a
     drift or gain drift (which the end's did not) and leave fewer noise
     floors, or when the end's held-out part was at the floor with only the
     record's start left and the blocks name an initial state and explain the
     record (:func:`start_left_to_blocks`), or when both found an initial
-    state and only the blocks explain the record (:func:`start_found_by_both`);
-    the end's otherwise.  The other is
+    state and only the blocks explain the record (:func:`start_found_by_both`),
+    or when the blocks explain the record with no effect the end did not name
+    (:func:`blocks_explain_what_end_named`); the end's otherwise.  The other is
     summarised under ``other_split``, with why it was not taken or why it
     was."""
     left_end = end["rms_heldout"] / end["noise_floor"]
@@ -102,7 +140,8 @@ def choose_split(end, blocks, say):
     named = [e for e in blocks["effects"] if e in INTERPOLATED]
     start = start_left_to_blocks(end, blocks)
     found = start_found_by_both(end, blocks)
-    take = (bool(named) and left_blocks < left_end) or start or found
+    wider = blocks_explain_what_end_named(end, blocks)
+    take = (bool(named) and left_blocks < left_end) or start or found or wider
     chosen, other = (blocks, end) if take else (end, blocks)
     # the summary of the split not taken says what it would name, by the same rules on small later steps
     # and the core's shape as the one reported (the choice above is made on the splits as searched)
@@ -118,6 +157,11 @@ def choose_split(end, blocks, say):
                           f"{left_end:.2f} noise floors; with blocks spread over the record the initial state is "
                           f"named and {left_blocks:.2f} noise floors are left (explained): both splits find the "
                           "record's start, and the fit on stretches spread over the record explains it")
+    elif wider and not (named and left_blocks < left_end):
+        summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors; with "
+                          f"blocks spread over the record it is explained at {left_blocks:.2f}, with no effect the "
+                          "end did not name: fitted around the blocks, the same parts reproduce what they did not "
+                          "when fitted with the end held out")
     elif take:
         summary["why"] = (f"with the end held out the record was unexplained at {left_end:.2f} noise floors and no "
                           f"{' or '.join(INTERPOLATED)} was named; with blocks spread over the record "
