@@ -50,10 +50,11 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1324/1725 (76.8 %) over the fifty-six sets in round 57
-# (1308/1695 over the fifty-five earlier sets: round 57's blocks split for an initial state both splits find made
+# The issue's criterion is over three seeds: 1331/1725 (77.2 %) over the fifty-six sets in round 57
+# (1315/1695 over the fifty-five earlier sets: round 57's blocks split for an initial state both splits find made
 # HOLDOUT52's freezer night right at seeds 1 and 2 and HOLDOUT12's pair at seed 2, and HOLDOUT12's pair at seed 1,
-# measured again, went wrong; HOLDOUT55 16/30 when fresh and as committed: a P(VDF-TrFE) unimorph; 1306 in round 56;
+# measured again, went wrong; its wider rule, the blocks taken when they explain the record with no effect the end
+# did not name, made seven runs right, five of them clean records; HOLDOUT55 16/30 when fresh and as committed: a P(VDF-TrFE) unimorph; 1306 in round 56;
 # 1291/1665 over the fifty-four earlier sets: round 56's creep back made five runs of HOLDOUT52's and HOLDOUT53's
 # creep records right and one of HOLDOUT48's drift records wrong; 1287 in round 55; HOLDOUT54 15/30 when fresh and
 # as committed: a spin-crossover strip; 1270/1635 over the fifty-three earlier sets: round 55's rule on creep beside a misfit out of the vocabulary made
@@ -61,7 +62,7 @@ def test_no_crash(rows):
 # metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 444/575 (77.2 %), 517.5 needed, so
+# open. At seed 0, as run here, 445/575 (77.4 %), 517.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -74,22 +75,23 @@ def test_no_crash(rows):
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
 # 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54) and 16/30 (HOLDOUT55)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1324/1725 right over three seeds of the fifty-six sets "
-                                         "(76.8 %); at seed 0 444/575 (77.2 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1331/1725 right over three seeds of the fifty-six sets "
+                                         "(77.2 %); at seed 0 445/575 (77.4 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 444/575 right at seed 0 in round 57 (77.2 %; HOLDOUT55 5 of 10; 439/565 in round 56, HOLDOUT54
+    # regression guard: 445/575 right at seed 0 in round 57 (77.4 %; HOLDOUT55 5 of 10, round 57's wider blocks rule
+    # one more of the fifty-five earlier sets; 439/565 in round 56, HOLDOUT54
     # 4 of 10, round 56's creep back two more of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round
-    # 54); at least 434, ten runs of
+    # 54); at least 435, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
     assert len(rows) >= 575
-    assert right >= 434, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 435, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -233,14 +235,14 @@ def test_no_effect_named_on_clean_records(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: a saturation is named on HOLDOUT34's clean stage on "
-                                        "stiffening Gent rubber pads (seed 0 here; seeds 0 and 2 over three), "
-                                        "on HOLDOUT41's pinned-wall ferrite ring at seed 2, on HOLDOUT45's "
+                                        "stiffening Gent rubber pads (seed 0; since round 57 not at seed 2 "
+                                        "nor on HOLDOUT41's pinned-wall ferrite ring at seed 2), on HOLDOUT45's "
                                         "Terfenol-D rod at seed 2, on HOLDOUT46's polypyrrole bender at seed 2 and "
                                         "on HOLDOUT42's shape-memory wire at seed 2 "
                                         "(its asymmetry tentative since round 49); an asymmetry on HOLDOUT43's electrowetting "
                                         "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
-                                        "every seed, on HOLDOUT53's metal-hydride cell at seeds 1 and 2; a drift on HOLDOUT54's "
+                                        "every seed, on HOLDOUT53's metal-hydride cell at seed 1; a drift on HOLDOUT54's "
                                         "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2 "
                                         "(since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
