@@ -88,6 +88,19 @@ def stroke(h):
     return c, np.abs(h - c).max()
 
 
+def minimum_jerk(s):
+    """The minimum-jerk move 0 ... 1 over s in 0 ... 1 (0 before, 1 after): 10 s^3 - 15 s^4 + 6 s^5 (Flash and
+    Hogan 1985, from memory), zero speed and acceleration at both ends."""
+    s = np.clip(np.asarray(s, float), 0.0, 1.0)
+    return s ** 3 * (10.0 - 15.0 * s + 6.0 * s * s)
+
+
+def minimum_jerk_speed(s):
+    """:func:`minimum_jerk`'s speed (a unit move over a unit time) at s in [0, 1]: 30 s^2 (1 - s)^2."""
+    s = np.asarray(s, float)
+    return 30.0 * s * s * (1.0 - s) ** 2
+
+
 def knots_at(t, knots, move):
     """The position on times t through knots [(time, position), ...] joined by ``move(s)`` (a
     point-to-point move 0 ... 1 over s in 0 ... 1); the first knot's position before it, the last's

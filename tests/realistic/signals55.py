@@ -14,18 +14,11 @@ with a continuous speed and acceleration). Nothing here imports hystcomp.
 import numpy as np
 
 from .set_tools import Programme as _Prog, knots_at as _knots_at
+from .set_tools import minimum_jerk as _minimum_jerk, minimum_jerk_speed as _minimum_jerk_speed
 
 
-def reach(s):
-    """The move 0 ... 1 over s in 0 ... 1 (0 before, 1 after): the minimum-jerk polynomial 10 s^3 - 15 s^4 + 6 s^5."""
-    s = np.clip(np.asarray(s, float), 0.0, 1.0)
-    return s ** 3 * (10.0 - 15.0 * s + 6.0 * s * s)
-
-
-def reach_speed(s):
-    """The move's speed (a unit move over a unit time) at s in [0, 1]: 30 s^2 (1 - s)^2."""
-    s = np.asarray(s, float)
-    return 30.0 * s * s * (1.0 - s) ** 2
+#: the move 0 ... 1 over s in 0 ... 1 (0 before, 1 after), and its speed: the minimum-jerk polynomial
+reach, reach_speed = _minimum_jerk, _minimum_jerk_speed
 
 
 def knots_at(t, knots):
