@@ -82,9 +82,11 @@ def test_search_memory_named_initial_state_by_the_staircase(record):
 def test_without_the_staircase_the_memory_is_not_explained(record, monkeypatch):
     # why the part is there: with the two-point and ringing preloads only, the diagnosis still
     # names the initial state (the ringing preload) but leaves structure at the start
-    # (measured 1.21 noise floors, verdict unexplained)
+    # (measured 1.21 noise floors, verdict unexplained) with the end held out; since round 57,
+    # with held_out="auto", the blocks split, which names the initial state too and explains the
+    # record between its fitted stretches, is taken instead
     t, v, y, sigma, _ = record
     monkeypatch.delitem(PARTS, "staircase_preload")
-    rep = diagnose(t, v, y, progress=False)
+    rep = diagnose(t, v, y, progress=False, held_out="last")
     assert rep.verdict == "unexplained"
     assert "staircase_preload" not in [p.get("kind") for p in rep.model.describe()]

@@ -85,18 +85,20 @@ def test_the_lines_say_what_it_can_and_cannot_tell():
     assert "(signatures present: asymmetry)" in line and "explains the record either" in line
 
 
-def _case(prefix, seed):
+def _case(prefix, seed, held_out="auto"):
     name = [n for n in ALL if n.startswith(prefix)][0]
     rec = ALL[name](seed)
-    return rec, diagnose(rec.t, rec.v, rec.y, progress=False)
+    return rec, diagnose(rec.t, rec.v, rec.y, progress=False, held_out=held_out)
 
 
 @pytest.fixture(scope="module")
 def capstan():
     # HOLDOUT35's push-pull cable with capstan friction, clean, seed 0: not a PI core (every point of the
     # cable a play of log(1 + |F| / c)); the vocabulary leaves it at 1.32 noise floors with nothing named, a
-    # saturation removing none of the misfit, and a correlated residual: unexplained by the PI model
-    return _case("holdout35_clean_bowden_cable", 0)
+    # saturation removing none of the misfit, and a correlated residual: unexplained by the PI model.  Held out
+    # at the end: since round 57, with held_out="auto" the blocks split, which explains it with the PI model and
+    # nothing named (its saturation tentative), is taken before a Preisach-type core is tried
+    return _case("holdout35_clean_bowden_cable", 0, "last")
 
 
 def test_a_core_that_is_not_pi_is_explained_by_a_preisach_type_core(capstan):
@@ -182,7 +184,7 @@ def test_taken_only_the_verdict_and_the_model_change(monkeypatch, capstan):
 
     rec, rep = capstan
     monkeypatch.setattr(search, "preisach_core", lambda kw, say: dict(kw, preisach_core=None))
-    off = diagnose(rec.t, rec.v, rec.y, progress=False)
+    off = diagnose(rec.t, rec.v, rec.y, progress=False, held_out="last")
     assert off.preisach_core is None and rep.preisach_core is not None
     assert off.verdict == "unexplained" and rep.verdict == "explained"
     assert (off.effects, off.rms_before, off.steps) == (rep.effects, rep.rms_before, rep.steps)
@@ -253,5 +255,5 @@ def test_the_diagnosis_solves_without_cvxpy(monkeypatch, capstan):
 
     monkeypatch.setattr(cvxpy.Problem, "solve", no_cvxpy)
     rec, rep = capstan
-    again = diagnose(rec.t, rec.v, rec.y, progress=False)
+    again = diagnose(rec.t, rec.v, rec.y, progress=False, held_out="last")
     assert again.preisach_core == {**rep.preisach_core, "seconds": again.preisach_core["seconds"]}

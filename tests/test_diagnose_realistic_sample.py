@@ -142,12 +142,14 @@ def test_a_clean_core_that_is_not_pi_gets_nothing_named(rows):
     assert len(not_pi) == len(NOT_PI_CLEAN) == 6
     assert all(not r["effects"] for r in not_pi), _table(not_pi)
     # since round 45 a Preisach-type core is taken where it explains a record left unexplained with nothing
-    # named: HOLDOUT35's cable (1.01 noise floors) and HOLDOUT39's rod (1.10) at seed 0, within the explained
-    # bound (about 1.45) by a margin no BLAS moves; the other four stay unexplained (the KP core 1.66, 3.88, 3.42 and,
-    # on HOLDOUT50's harmonic drive, 1.50 against the PI model's 1.41: not taken)
+    # named: HOLDOUT39's rod (1.10 noise floors) at seed 0, within the explained bound (about 1.45) by a margin no
+    # BLAS moves, and HOLDOUT35's cable (1.01) until round 57, since when the blocks split explains the cable with
+    # the PI model and nothing named before a Preisach-type core is tried; the other four stay unexplained (the
+    # KP core 1.66, 3.88, 3.42 and, on HOLDOUT50's harmonic drive, 1.50 against the PI model's 1.41: not taken)
     taken = {r["case"].split("_")[0] for r in not_pi if (r["preisach_core"] or {}).get("taken")}
-    assert taken == {"holdout35", "holdout39"}, _table(not_pi)
-    assert all(r["verdict"] == ("explained" if r["case"].split("_")[0] in taken else "unexplained")
+    assert taken == {"holdout39"}, _table(not_pi)
+    explained = taken | {"holdout35"}
+    assert all(r["verdict"] == ("explained" if r["case"].split("_")[0] in explained else "unexplained")
                for r in not_pi), _table(not_pi)
 
 

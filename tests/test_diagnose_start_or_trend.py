@@ -56,24 +56,25 @@ def test_sides():
 _CACHE = {}
 
 
-def _run(prefix, seed):
+def _run(prefix, seed, held_out="auto"):
     name = [n for n in ALL if n.startswith(prefix)][0]
-    if (name, seed) not in _CACHE:
+    if (name, seed, held_out) not in _CACHE:
         rec = ALL[name](seed)
-        _CACHE[name, seed] = (rec, diagnose(rec.t, rec.v, rec.y, progress=False))
-    return _CACHE[name, seed]
+        _CACHE[name, seed, held_out] = (rec, diagnose(rec.t, rec.v, rec.y, progress=False, held_out=held_out))
+    return _CACHE[name, seed, held_out]
 
 
-@pytest.mark.parametrize("prefix, seed", [
-    # a servo's ringing leaves it; the drift 29.6, the preload 27.3 (round 21 named drift)
-    ("holdout15_initial_state_underdamped_servo", 1),
+@pytest.mark.parametrize("prefix, seed, held_out", [
+    # until round 57 also HOLDOUT15's underdamped servo at seed 1 (a servo's ringing leaves it; the drift 29.6,
+    # the preload 27.3): since then the blocks split, which names the initial state alone and explains the
+    # record, is reported, and its step carries no near tie with a drift
     # a preload below the stroke before random drive; the slow drift 24.8, the two-point preload 24.0, the
     # training BIC lower by 29,500 for the preload (round 31; until round 30 this test's first record was
     # HOLDOUT19's teleoperation at seed 0, below)
-    ("holdout5_initial_state_preload_below_random", 2),
+    ("holdout5_initial_state_preload_below_random", 2, "auto"),
 ])
-def test_a_memory_is_named_where_a_drift_gained_a_hair_more(prefix, seed):
-    rec, rep = _run(prefix, seed)
+def test_a_memory_is_named_where_a_drift_gained_a_hair_more(prefix, seed, held_out):
+    rec, rep = _run(prefix, seed, held_out)
     assert rep.effects == ["initial_state"]
     ev = rep.steps[0]["evidence"]
     told = ev["start_or_trend"]
