@@ -272,7 +272,8 @@ the initial-state case's; a PI model of 12 plays fitted by NNLS leaves 1.17 ... 
 most 6.7 ... 6.8 sigma), measured in tests/test_realistic_holdout54.py.
 :data:`HOLDOUT55` (``cases_holdout55.py``) was written after HOLDOUT54 was measured, by a session that did not read how
 the diagnosis decides, and run once for round 57's measurement (docs/diagnose.md, commit 58bc36b, 16 of 30 runs
-right); it is part of :data:`ALL` since. Its core is a ferroelectric-polymer unimorph: a silicon cantilever carrying a poled film of the
+right); it is part of :data:`ALL` since. Its core is a ferroelectric-polymer unimorph: a silicon cantilever
+carrying a poled film of the
 copolymer P(VDF-TrFE), its field set by the drive, its tip read by a fibre-optic displacement sensor: 4000 classes of
 soft crystallites (single domains, each a relay of the field between E_c - E_b and -E_c - E_b, their coercive fields
 log-normal and their internal fields normal) that the drive switches and 500 of hard ones that hold the remanent
