@@ -55,7 +55,7 @@ from realistic import cases_holdout53 as c53
 from realistic import mechanisms53 as m53
 from realistic import signals53 as s53
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
-from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator, assert_minimum_jerk as _minimum_jerk
 from realistic.set_checks import assert_relay_core as _relay_core, beyond_gain_and_offset as _fit, holds as _holds
 from realistic.set_checks import pi_fit_rms as _pi_fit_rms
 
@@ -123,18 +123,8 @@ def test_holdout53_is_well_formed_and_in_all():
 
 
 def test_reach_and_programmes():
-    # the minimum-jerk reach against quad of its speed 30 s^2 (1 - s)^2 (1e-12); its speed by central differences
-    # (1e-6) and its peak at the middle (1e-5), 1.875 times the mean speed (1e-12)
-    for sv in np.linspace(0.0, 1.0, 41):
-        ref = quad(lambda u: 30 * u * u * (1 - u) ** 2, 0.0, sv, epsabs=1e-15, epsrel=1e-13)[0]
-        assert float(s53.reach(sv)) == pytest.approx(ref, abs=1e-12)
-    assert s53.reach(0.0) == 0.0 and s53.reach(1.0) == 1.0 and s53.reach(-0.5) == 0.0 and s53.reach(1.5) == 1.0
-    si = np.linspace(0.01, 0.99, 99)
-    sp = (s53.reach(si + 1e-6) - s53.reach(si - 1e-6)) / 2e-6
-    np.testing.assert_allclose(sp, s53.reach_speed(si), rtol=0, atol=1e-6)
-    fine = np.linspace(0.4, 0.6, 200001)
-    assert fine[np.argmax(s53.reach_speed(fine))] == pytest.approx(0.5, abs=1e-5)
-    assert float(s53.reach_speed(0.5)) == pytest.approx(1.875, abs=1e-12)
+    # the minimum-jerk reach (set_tools.minimum_jerk) against quad of its speed, and its speed (set_checks)
+    _minimum_jerk(s53.reach, s53.reach_speed)
     # the knots' evaluator against a direct search (1e-12), the first knot's value before and the last's after
     _knots_evaluator(s53.reach, s53.knots_at)
     rng = np.random.default_rng(7)

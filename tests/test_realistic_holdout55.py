@@ -53,7 +53,7 @@ from realistic import cases_holdout55 as c55
 from realistic import mechanisms55 as m55
 from realistic import signals55 as s55
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
-from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
+from realistic.set_checks import assert_knots_evaluator as _knots_evaluator, assert_minimum_jerk as _minimum_jerk
 from realistic.set_checks import assert_relay_core as _relay_core, holds as _holds, pi_fit_rms as _pi_fit_rms
 from test_realistic_holdout50 import _big, _full_both_ways, _lopsided
 
@@ -107,18 +107,8 @@ def test_holdout55_is_well_formed_and_joined():
 
 
 def test_reach_and_programmes():
-    # the minimum-jerk reach against quad of its speed 30 s^2 (1 - s)^2 (1e-13); its speed by central differences
-    # (1e-6), its peak at mid-move (1e-5) and its mean speed 1 there times 1.875 (1e-12)
-    for sv in np.linspace(0.0, 1.0, 41):
-        ref = quad(lambda u: 30.0 * u * u * (1 - u) ** 2, 0.0, sv, epsabs=1e-14, epsrel=1e-13)[0]
-        assert float(s55.reach(sv)) == pytest.approx(ref, abs=1e-13)
-    assert s55.reach(0.0) == 0.0 and s55.reach(1.0) == 1.0 and s55.reach(-0.5) == 0.0 and s55.reach(1.5) == 1.0
-    si = np.linspace(0.01, 0.99, 99)
-    sp = (s55.reach(si + 1e-6) - s55.reach(si - 1e-6)) / 2e-6
-    np.testing.assert_allclose(sp, s55.reach_speed(si), rtol=0, atol=1e-6)
-    fine = np.linspace(0.4, 0.6, 200001)
-    assert fine[np.argmax(s55.reach_speed(fine))] == pytest.approx(0.5, abs=1e-5)
-    assert float(s55.reach_speed(0.5)) == pytest.approx(1.875, abs=1e-12)
+    # the minimum-jerk reach (set_tools.minimum_jerk) against quad of its speed, and its speed (set_checks)
+    _minimum_jerk(s55.reach, s55.reach_speed)
     # the knots' evaluator against a direct search of its knots (1e-12)
     _knots_evaluator(s55.reach, s55.knots_at)
     rng = np.random.default_rng(7)

@@ -103,3 +103,22 @@ def assert_knots_evaluator(reach, knots_at):
             ref = x0 + (x1 - x0) * float(reach((tt - t0) / (t1 - t0)))
         got = float(knots_at(np.array([tt]), kn)[0])
         assert abs(got - ref) <= 1e-12, (tt, got, ref)
+
+
+def assert_minimum_jerk(reach, reach_speed):
+    """A programme's minimum-jerk move (:func:`realistic.set_tools.minimum_jerk` and its speed) against quad of its
+    speed 30 s^2 (1 - s)^2 (1e-13: quad's own tolerance is 1e-15 absolute), 0 before and 1 after the move; its speed
+    by central differences (1e-6, the difference's truncation at a step of 1e-6), its peak at mid-move (1e-5, the
+    grid's step) and 1.875 there (1e-12, rounding)."""
+    from scipy.integrate import quad
+
+    for sv in np.linspace(0.0, 1.0, 41):
+        ref = quad(lambda u: 30.0 * u * u * (1 - u) ** 2, 0.0, sv, epsabs=1e-15, epsrel=1e-13)[0]
+        assert abs(float(reach(sv)) - ref) <= 1e-13, (sv, float(reach(sv)), ref)
+    assert reach(0.0) == 0.0 and reach(1.0) == 1.0 and reach(-0.5) == 0.0 and reach(1.5) == 1.0
+    si = np.linspace(0.01, 0.99, 99)
+    sp = (reach(si + 1e-6) - reach(si - 1e-6)) / 2e-6
+    np.testing.assert_allclose(sp, reach_speed(si), rtol=0, atol=1e-6)
+    fine = np.linspace(0.4, 0.6, 200001)
+    assert abs(fine[np.argmax(reach_speed(fine))] - 0.5) <= 1e-5
+    assert abs(float(reach_speed(0.5)) - 1.875) <= 1e-12
