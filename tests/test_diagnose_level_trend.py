@@ -94,3 +94,55 @@ def test_gain_changing_with_frequency_under_a_chirp_is_not_a_gain_drift():
     assert plain > 4 * PARTIAL
     # the local frequency follows the chirp's (correlation over 0.95)
     assert np.corrcoef(_local_frequency(rec), f)[0, 1] > 0.95
+
+
+def _staircase_record():
+    """A unipolar programme of sets (a weightlifter's session, a dispenser's
+    doses): the input rests at 0 and is held at one of twelve levels for a
+    quarter of each of twelve stretches, so the input's level changes slowly
+    along the record (160 s at 100 Hz)."""
+    dt, n = 1e-2, 16_000
+    t = np.arange(n) * dt
+    v = np.zeros(n)
+    levels = [60, 95, 40, 80, 95, 60, 30, 90, 70, 95, 50, 85]
+    seg = n // len(levels)
+    for i, level in enumerate(levels):
+        v[i * seg + seg // 4:i * seg + 3 * seg // 4] = level
+    v = np.convolve(v, np.ones(50) / 50, mode="same")          # 0.5 s ramps
+    pred = 0.02 * v
+    return Record(t, v, pred, 0.3), t / t[-1], pred
+
+
+@pytest.mark.parametrize("cycles, phase, seed", [(2.4, 0.3, 0), (2.8, 0.0, 1), (3.8, 0.3, 2)])
+def test_drift_that_rises_and_falls_is_common_to_every_level(monkeypatch, cycles, phase, seed):
+    # a thermostat's or a chiller's cycle: an offset rising and falling 2.4-3.8
+    # times over the record, the same at every input level.  t and t^2 follow
+    # little of it, and what they leave the level's trends (t x v, t x v^2, ...)
+    # pick up where the input's level changes slowly: judged beyond t and t^2
+    # alone it reads as "a trend that changes with the level" (round 57's test,
+    # SLOW_CYCLES = 0); judged beyond slow cosines in time as well (4 cycles)
+    # the level's share is noise (measured 0.02-0.12 noise floors, against
+    # 0.59-0.92 for the trend; 1.25-2.30 beyond t and t^2 alone)
+    import hystcomp.diagnose.signatures as sig
+
+    rec, s, pred = _staircase_record()
+    e = 0.08 * np.sin(2 * np.pi * (cycles * s + phase)) + _noise(rec.n, seed)
+    ev = evidence(rec, e, pred, SIGMA, only="drift")["drift"]
+    assert ev["statistic"] > PARTIAL and ev["present"]
+    assert ev["level_dependent_trend"] < 0.3 * ev["statistic"]
+    monkeypatch.setattr(sig, "SLOW_CYCLES", 0)
+    rec.signature_memo.clear()
+    plain = evidence(rec, e, pred, SIGMA, only="drift")["drift"]
+    assert not plain["present"] and plain["level_dependent_trend"] > LEVEL_TREND * plain["statistic"]
+
+
+def test_trend_that_changes_with_the_level_is_not_a_drift_beyond_slow_cosines():
+    # on the same programme, a misfit that grows in time in proportion to the
+    # input's level (0 at rest): the slow cosines in time do not take it, and
+    # it stays "a trend that changes with the level" (measured 1.36 noise
+    # floors against 0.99 for the common trend)
+    rec, s, pred = _staircase_record()
+    xc = (rec.v - 0.5 * (rec.vmin + rec.vmax)) / (0.5 * rec.span)
+    ev = evidence(rec, 0.08 * s * (xc + 1.0) + _noise(rec.n), pred, SIGMA, only="drift")["drift"]
+    assert ev["statistic"] > PARTIAL and not ev["present"]
+    assert ev["level_dependent_trend"] > LEVEL_TREND * ev["statistic"]

@@ -144,6 +144,25 @@ def _level_verdict(common, by_level, sigma, what, how, effect):
     return {"also": ok, "level_dependent_trend": round(by_level / sigma, 4), "reading": reading}
 
 
+#: full cycles of the smooth trend in time (cosines) beyond which the drift's
+#: level test reads a trend that changes with the input level (0: beyond t and
+#: t^2 alone, as before round 58)
+SLOW_CYCLES = 4
+
+
+def _slow_time(n):
+    """Cosines of 1 ... 2 :data:`SLOW_CYCLES` half cycles over the record's
+    samples (a smooth trend in time of up to that many cycles).
+
+    Examples
+    --------
+    >>> _slow_time(5).shape, _slow_time(5)[[0, -1], 0].tolist()
+    ((5, 8), [1.0, -1.0])
+    """
+    tn = np.arange(n) / max(n - 1, 1)
+    return np.column_stack([np.cos(np.pi * k * tn) for k in range(1, 2 * SLOW_CYCLES + 1)])
+
+
 def _static_nuisance(rec, bins=12):
     """Piecewise-linear functions of the input (hat functions on `bins`
     knots), separately on rising and falling branches, and a constant."""
@@ -373,6 +392,17 @@ def evidence(rec, e, pred, sigma, only=None):
             common, by_level = _level_split_fixed(
                 e, rec, ("drift",), N, lambda: T,
                 lambda: [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
+            if SLOW_CYCLES and by_level > LEVEL_TREND * common:
+                # ... judged beyond a smooth trend in time as well (cosines of up to
+                # SLOW_CYCLES cycles): a drift that rises and falls (a chiller's
+                # dead band, a valve's stiction cycles) leaves, beyond t and t^2,
+                # a wave that the level's trends pick up where the input's level
+                # changes slowly (rests and sets), and would read as one that
+                # changes with the level (round 58: tests/test_diagnose_level_trend.py)
+                by_level = _partial_fixed(e, rec, ("drift", "slow"), lambda: (
+                    np.column_stack([N, T, _slow_time(n)]),
+                    np.column_stack([T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
+                                     T * (d * xc)[:, None]])))
             put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
                 common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
