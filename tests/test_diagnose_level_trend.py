@@ -134,15 +134,32 @@ def test_drift_that_rises_and_falls_is_common_to_every_level(monkeypatch, cycles
     rec.signature_memo.clear()
     plain = evidence(rec, e, pred, SIGMA, only="drift")["drift"]
     assert not plain["present"] and plain["level_dependent_trend"] > LEVEL_TREND * plain["statistic"]
+    # the bound beyond the cosines decides: at a hundredth of the common trend
+    # (below the 0.03-0.17 of it these leave) the same residual is not a drift
+    monkeypatch.setattr(sig, "SLOW_CYCLES", 4)
+    monkeypatch.setattr(sig, "SLOW_LEVEL_TREND", 0.01)
+    rec.signature_memo.clear()
+    assert not evidence(rec, e, pred, SIGMA, only="drift")["drift"]["present"]
 
 
-def test_trend_that_changes_with_the_level_is_not_a_drift_beyond_slow_cosines():
+def test_trend_that_changes_with_the_level_is_not_a_drift_beyond_slow_cosines(monkeypatch):
     # on the same programme, a misfit that grows in time in proportion to the
     # input's level (0 at rest): the slow cosines in time do not take it, and
     # it stays "a trend that changes with the level" (measured 1.36 noise
-    # floors against 0.99 for the common trend)
+    # floors beyond them, 1.51 beyond t and t^2 alone, against 0.99 for the
+    # common trend)
+    import hystcomp.diagnose.signatures as sig
+
     rec, s, pred = _staircase_record()
     xc = (rec.v - 0.5 * (rec.vmin + rec.vmax)) / (0.5 * rec.span)
-    ev = evidence(rec, 0.08 * s * (xc + 1.0) + _noise(rec.n), pred, SIGMA, only="drift")["drift"]
+    e = 0.08 * s * (xc + 1.0) + _noise(rec.n)
+    ev = evidence(rec, e, pred, SIGMA, only="drift")["drift"]
     assert ev["statistic"] > PARTIAL and not ev["present"]
     assert ev["level_dependent_trend"] > LEVEL_TREND * ev["statistic"]
+    # beyond the cosines the level's share is still above the bound
+    # (SLOW_LEVEL_TREND of the common trend), and the reading keeps the share
+    # beyond t and t^2 alone
+    monkeypatch.setattr(sig, "SLOW_CYCLES", 0)
+    rec.signature_memo.clear()
+    plain = evidence(rec, e, pred, SIGMA, only="drift")["drift"]
+    assert plain["level_dependent_trend"] == ev["level_dependent_trend"] and not plain["present"]

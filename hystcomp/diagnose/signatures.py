@@ -148,6 +148,11 @@ def _level_verdict(common, by_level, sigma, what, how, effect):
 #: level test reads a trend that changes with the input level (0: beyond t and
 #: t^2 alone, as before round 58)
 SLOW_CYCLES = 4
+#: ... and the most the level's trends may explain beyond those cosines, as a
+#: multiple of the trend common to every level (round 58: the drifts that rise
+#: and fall on HOLDOUT50-52 left 0.11-0.39; asymmetries and a clean Dahl core
+#: that a drift would have been named on, 0.77-0.98)
+SLOW_LEVEL_TREND = 0.5
 
 
 def _slow_time(n):
@@ -398,11 +403,15 @@ def evidence(rec, e, pred, sigma, only=None):
                 # dead band, a valve's stiction cycles) leaves, beyond t and t^2,
                 # a wave that the level's trends pick up where the input's level
                 # changes slowly (rests and sets), and would read as one that
-                # changes with the level (round 58: tests/test_diagnose_level_trend.py)
-                by_level = _partial_fixed(e, rec, ("drift", "slow"), lambda: (
+                # changes with the level (round 58: tests/test_diagnose_level_trend.py).
+                # The cosines take some of any slow misfit, so the level's share
+                # left beyond them must be at most SLOW_LEVEL_TREND of the trend
+                slow = _partial_fixed(e, rec, ("drift", "slow"), lambda: (
                     np.column_stack([N, T, _slow_time(n)]),
                     np.column_stack([T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
                                      T * (d * xc)[:, None]])))
+                if slow <= SLOW_LEVEL_TREND * common:
+                    by_level = slow
             put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
                 common, by_level, sigma, "the slow trend", "", "a drift"))
             pc = (pred - pred.mean()) / (np.std(pred) or 1.0)
