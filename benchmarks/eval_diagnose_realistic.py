@@ -58,8 +58,9 @@ HOLDOUT52 was run once for the fifty-fourth round's measurement (3 of 30 right) 
 HOLDOUT53 was run once for the fifty-fifth round's measurement (17 of 30 right) and is part of ALL since.
 HOLDOUT54 was run once for the fifty-sixth round's measurement (15 of 30 right) and is part of ALL since.
 HOLDOUT55 was run once for the fifty-seventh round's measurement (16 of 30 right) and is part of ALL since.
+HOLDOUT56 was run once for the fifty-eighth round's measurement (19 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout55|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout56|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--csv OUT] [--compare SAVED] [--perturb SHARE] [--jobs 2]
      python benchmarks/eval_diagnose_realistic.py --summary OUT     (the figures of a saved run, again)
      python benchmarks/eval_diagnose_realistic.py --summary NEW --compare SAVED   (run by run against another)

@@ -282,15 +282,16 @@ state the controller's decaying conditioning of the field leaves before every re
 model of 12 plays fitted by NNLS leaves 1.77 ... 1.99 sigma RMS on its clean record (at most 7.6 ... 8.3 sigma),
 measured in tests/test_realistic_holdout55.py.
 :data:`HOLDOUT56` (``cases_holdout56.py``) was written after HOLDOUT55 was measured, by a session that did not read how
-the diagnosis decides; it has not been measured yet and is kept out of :data:`ALL` until it is (run once, for the next
-round's measurement). Its core is a vanadium-dioxide thin-film bimorph: a cantilever of a VO2 film co-sputtered with
-tungsten on a polyimide strip, on a heater chip under a temperature loop, read by a confocal chromatic sensor: 6000
-classes of grains, each switching whole between the insulating monoclinic and the metallic rutile phase at its own
-temperatures (the metal-insulator transition, first order, its loop widening as the grain shrinks; Morin 1959, Lopez et
-al. 2002), their transition temperatures spread by the tungsten, the beam bent by the grains' transformation strain and
-the two layers' expansions (Timoshenko's bimetal, an arc); at rest in the state the controller's decaying thermal
-conditioning leaves before every record but the initial-state case's; a PI model of 12 plays fitted by NNLS leaves
-1.48 ... 1.62 sigma RMS on its clean record (at most 9.0 ... 11.3 sigma), measured in tests/test_realistic_holdout56.py.
+the diagnosis decides, and run once for round 58's measurement (docs/diagnose.md, commit ac5079b, 19 of 30 runs right);
+it is part of :data:`ALL` since. Its core is a vanadium-dioxide thin-film bimorph: a cantilever of a VO2 film
+co-sputtered with tungsten on a polyimide strip, on a heater chip under a temperature loop, read by a confocal chromatic
+sensor: 6000 classes of grains, each switching whole between the insulating monoclinic and the metallic rutile phase at
+its own temperatures (the metal-insulator transition, first order, its loop widening as the grain shrinks; Morin 1959,
+Lopez et al. 2002), their transition temperatures spread by the tungsten, the beam bent by the grains' transformation
+strain and the two layers' expansions (Timoshenko's bimetal, an arc); at rest in the state the controller's decaying
+thermal conditioning leaves before every record but the initial-state case's; a PI model of 12 plays fitted by NNLS
+leaves 1.48 ... 1.62 sigma RMS on its clean record (at most 9.0 ... 11.3 sigma), measured in
+tests/test_realistic_holdout56.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -350,7 +351,7 @@ from .cases_holdout52 import HOLDOUT52  # noqa: F401
 from .cases_holdout53 import HOLDOUT53  # noqa: F401
 from .cases_holdout54 import HOLDOUT54  # noqa: F401
 from .cases_holdout55 import HOLDOUT55  # noqa: F401
-from .cases_holdout56 import HOLDOUT56  # noqa: F401  (not in ALL until measured)
+from .cases_holdout56 import HOLDOUT56  # noqa: F401
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -359,7 +360,7 @@ ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HO
        **HOLDOUT33, **HOLDOUT34, **HOLDOUT35, **HOLDOUT36, **HOLDOUT37, **HOLDOUT38, **HOLDOUT39, **HOLDOUT40,
        **HOLDOUT41, **HOLDOUT42, **HOLDOUT43, **HOLDOUT44, **HOLDOUT45, **HOLDOUT46, **HOLDOUT47,
        **HOLDOUT48, **HOLDOUT49, **HOLDOUT50, **HOLDOUT51, **HOLDOUT52, **HOLDOUT53, **HOLDOUT54,
-       **HOLDOUT55}
+       **HOLDOUT55, **HOLDOUT56}
 
 __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOLDOUT3", "HOLDOUT4",
            "HOLDOUT5", "HOLDOUT6", "HOLDOUT7", "HOLDOUT8", "HOLDOUT9", "HOLDOUT10", "HOLDOUT11",
