@@ -394,9 +394,11 @@ def evidence(rec, e, pred, sigma, only=None):
             # branch and branch x v), as a misfit of the loop does under an
             # excitation whose amplitude changes in time
             d = rec.direction
-            common, by_level = _level_split_fixed(
-                e, rec, ("drift",), N, lambda: T,
-                lambda: [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]])
+
+            def level_trends():
+                return [T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None], T * (d * xc)[:, None]]
+
+            common, by_level = _level_split_fixed(e, rec, ("drift",), N, lambda: T, level_trends)
             if SLOW_CYCLES and by_level > LEVEL_TREND * common:
                 # ... judged beyond a smooth trend in time as well (cosines of up to
                 # SLOW_CYCLES cycles): a drift that rises and falls (a chiller's
@@ -407,9 +409,7 @@ def evidence(rec, e, pred, sigma, only=None):
                 # The cosines take some of any slow misfit, so the level's share
                 # left beyond them must be at most SLOW_LEVEL_TREND of the trend
                 slow = _partial_fixed(e, rec, ("drift", "slow"), lambda: (
-                    np.column_stack([N, T, _slow_time(n)]),
-                    np.column_stack([T * xc[:, None], T * (xc ** 2)[:, None], T * d[:, None],
-                                     T * (d * xc)[:, None]])))
+                    np.column_stack([N, T, _slow_time(n)]), np.column_stack(level_trends())))
                 if slow <= SLOW_LEVEL_TREND * common:
                     by_level = slow
             put("drift", sig, common / sigma, PARTIAL, **_level_verdict(
