@@ -6,8 +6,9 @@ benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sampl
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (63 clean records in all; HOLDOUT56's took 9.0 s in round 58's measurement). 90 runs at seed 0; 80
-were right in round 58, 79 in round 57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
+other set (61 clean records in all, HOLDOUT33's and HOLDOUT42's left to the slow test since round 58, see
+SLOW_CLEAN; HOLDOUT56's took 9.0 s in round 58's measurement). 88 runs at seed 0; 80 were right in round 58, 79 in round
+57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -73,10 +74,17 @@ SEED = 0
 SETS = ("holdout4_", "holdout9_", "holdout14_")
 
 
+#: clean records left to the slow acceptance test: the two slowest of the sample to diagnose (43.6 and
+#: 35.2 s at seed 0, 37 % of the sample's time), both cores that are not PI models and stay `unexplained`
+#: with nothing named; since round 58, to keep CI within its 20 minutes
+SLOW_CLEAN = ("holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
+              "holdout42_clean_niti_wire_bias_spring_tower_crane_1370hz")
+
+
 def _in_sample(name):
     # every set names its clean case "clean_..." or "<set>_clean_..." (test_the_sample checks
     # that these are the clean records: no effect, verdict explained)
-    return name.startswith(SETS) or name.startswith("clean_") or "_clean_" in name
+    return (name.startswith(SETS) or name.startswith("clean_") or "_clean_" in name) and name not in SLOW_CLEAN
 
 
 @pytest.fixture(scope="module")
@@ -87,8 +95,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 90
-    assert sum(r["clean"] for r in rows) == 63
+    assert len(rows) == 88
+    assert sum(r["clean"] for r in rows) == 61
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -100,7 +108,8 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 80/90 right in round 58 (HOLDOUT56's clean bimorph right at seed 0); 79/89 in round 57 (HOLDOUT55's clean unimorph right at seed 0); 78/88 in round 56 (HOLDOUT54's clean strip wrong at seed 0: a drift); 78/87 in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
+    # 80/88 right in round 58 (HOLDOUT56's clean bimorph right at seed 0; HOLDOUT33's and HOLDOUT42's clean
+    # records, wrong, left to the slow test, SLOW_CLEAN); 79/89 in round 57 (HOLDOUT55's clean unimorph right at seed 0); 78/88 in round 56 (HOLDOUT54's clean strip wrong at seed 0: a drift); 78/87 in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
     # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
     # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
     # asymmetries;
@@ -140,13 +149,14 @@ def test_a_clean_core_that_is_not_pi_gets_nothing_named(rows):
     # critical-state rod 1.33 floors at seed 0 with nothing paying; HOLDOUT42's shape-memory wire 3.60 floors at
     # seed 0 with its asymmetry tentative; HOLDOUT50's harmonic drive 1.41 floors at seed 0 with nothing paying
     not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
-    assert len(not_pi) == len(NOT_PI_CLEAN) == 6
+    assert len(not_pi) == len(NOT_PI_CLEAN) - len(SLOW_CLEAN) == 4
     assert all(not r["effects"] for r in not_pi), _table(not_pi)
     # since round 45 a Preisach-type core is taken where it explains a record left unexplained with nothing
     # named: HOLDOUT39's rod (1.10 noise floors) at seed 0, within the explained bound (about 1.45) by a margin no
     # BLAS moves, and HOLDOUT35's cable (1.01) until round 57, since when the blocks split explains the cable with
     # the PI model and nothing named before a Preisach-type core is tried; the other four stay unexplained (the
-    # KP core 1.66, 3.88, 3.42 and, on HOLDOUT50's harmonic drive, 1.50 against the PI model's 1.41: not taken)
+    # KP core 1.66, 3.88 and 3.42 on HOLDOUT32's, HOLDOUT33's and HOLDOUT42's, the last two in the slow test only, and,
+    # on HOLDOUT50's harmonic drive, 1.50 against the PI model's 1.41: not taken)
     taken = {r["case"].split("_")[0] for r in not_pi if (r["preisach_core"] or {}).get("taken")}
     assert taken == {"holdout39"}, _table(not_pi)
     explained = taken | {"holdout35"}
