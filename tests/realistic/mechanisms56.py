@@ -17,8 +17,9 @@ quad over the exposures; the water's uptake by a finite-volume solution; the wra
 import math
 
 import numpy as np
-from numba import njit
 from scipy.special import ndtri
+
+from .mechanisms52 import _relays  # relays up at tu, down at td along T, their share (s carried in and out)
 
 # ---- the rate-independent core: a VO2 thin-film bimorph, its grains switching between M1 and rutile ----
 #
@@ -136,26 +137,6 @@ def rest_state(core, T):
     """The conditioning's limit at the temperature T: every grain rutile (1) whose loop's middle lies below T."""
     tu, td = grains(core)
     return (0.5 * (tu + td) < T).astype(float)
-
-
-@njit(cache=True)
-def _relays(T, tu, td, s):
-    """The grains' rutile share along the temperatures T: each a relay up at tu, down at td (s carried in and out)."""
-    n = T.shape[0]
-    m = tu.shape[0]
-    out = np.empty(n)
-    for i in range(n):
-        Ti = T[i]
-        tot = 0.0
-        for k in range(m):
-            if s[k] > 0.5:
-                if Ti < td[k]:
-                    s[k] = 0.0
-            elif Ti > tu[k]:
-                s[k] = 1.0
-            tot += s[k]
-        out[i] = tot / m
-    return out
 
 
 def rutile_share(core, T, s=None):
