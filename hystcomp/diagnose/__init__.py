@@ -23,7 +23,8 @@ asymmetry          asymmetric mGPI envelopes (with saturation: two saturating
                    envelopes)
 saturation         mGPI envelope ``tanh(b v)/b`` (eq. 25)
 output_saturation  clipping of the output
-delay              dead time in fractional samples
+delay              dead time in fractional samples (up to 0.2 % of the record,
+                   then on up to 0.5 s when the best ends there)
 initial_state      a preload history before the record (the plays' start state)
 =================  =============================================================
 
