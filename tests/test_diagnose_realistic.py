@@ -50,8 +50,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1355/1755 (77.2 %) over the fifty-seven sets in round 58
-# (1336/1725 over the fifty-six earlier sets: round 58's drift test beyond slow cosines in time made five drift runs of
+# The issue's criterion is over three seeds: 1375/1785 (77.0 %) over the fifty-eight sets in round 59
+# (1360/1755 over the fifty-seven earlier sets: round 59's dead time searched on past its first bound made HOLDOUT52's
+# water-line delay right at every seed and HOLDOUT56's USB buffer at seeds 0 and 1; HOLDOUT57 15/30 when fresh and as
+# committed: a salted-cage Bragg mirror; 1355 in round 58; 1336/1725 over the fifty-six earlier sets: round 58's drift test beyond slow cosines in time made five drift runs of
 # HOLDOUT50-52 right; HOLDOUT56 19/30 when fresh and as
 # committed: a VO2 bimorph; 1331 in round 57; 1315/1695 over the fifty-five earlier sets: round 57's blocks split for an initial state both splits find made
 # HOLDOUT52's freezer night right at seeds 1 and 2 and HOLDOUT12's pair at seed 2, and HOLDOUT12's pair at seed 1,
@@ -64,7 +66,7 @@ def test_no_crash(rows):
 # metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 452/585 (77.3 %), 526.5 needed, so
+# open. At seed 0, as run here, 459/595 (77.1 %), 535.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -75,26 +77,27 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55) and 19/30 (HOLDOUT56)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55), 19/30 (HOLDOUT56) and 15/30 (HOLDOUT57)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1355/1755 right over three seeds of the fifty-seven sets "
-                                         "(77.2 %); at seed 0 452/585 (77.3 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1375/1785 right over three seeds of the fifty-eight sets "
+                                         "(77.0 %); at seed 0 459/595 (77.1 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 452/585 right at seed 0 in round 58 (77.3 %; HOLDOUT56 6 of 10, round 58's drift test one more
-    # of the fifty-six earlier sets; 445/575 in round 57, HOLDOUT55 5 of 10, round 57's wider blocks rule
+    # regression guard: 459/595 right at seed 0 in round 59 (77.1 %; HOLDOUT57 5 of 10, round 59's dead time past its
+    # first bound two more of the fifty-seven earlier sets; 452/585 in round 58, HOLDOUT56 6 of 10, round 58's drift
+    # test one more of the fifty-six earlier sets; 445/575 in round 57, HOLDOUT55 5 of 10, round 57's wider blocks rule
     # one more of the fifty-five earlier sets; 439/565 in round 56, HOLDOUT54
     # 4 of 10, round 56's creep back two more of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round
-    # 54); at least 442, ten runs of
+    # 54); at least 449, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 585
-    assert right >= 442, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 595
+    assert right >= 449, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -104,7 +107,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 585 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 595 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -140,13 +143,19 @@ def test_answers_as_committed(rows):
 #: play of the wave generator's friction on the motor's torque ahead of 42 teeth, each a wedge with friction that
 #: holds between two forces, bending in series and sharing the rim's travel: plays in series with compliances, not a
 #: PI core; a 12-play PI fit leaves 1.51-2.10 sigma), fresh in round 52: unexplained with nothing named at 1.41
-#: true noise levels at seed 0, `explained` with nothing named at seeds 1 and 2 (1.31 and 1.27)
+#: true noise levels at seed 0, `explained` with nothing named at seeds 1 and 2 (1.31 and 1.27). HOLDOUT57's
+#: humidity-tuned Bragg mirror (6000 classes of ink-bottle cages in mesoporous silica, each filling at one humidity
+#: and emptying at a lower one, Kelvin with Cohan's menisci, beside a reversible BET film on the empty cages: relays
+#: and a reversible part read through the layers' index, not a PI core; a 12-play PI fit leaves 1.49-1.61 sigma),
+#: fresh in round 59: unexplained with nothing named at 2.02 true noise levels at seed 0, `explained` with nothing
+#: named at seed 1 (1.28) and with a drift at seed 2 (1.34)
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
                 "holdout39_clean_kim_critical_state_rod_inkjet_carriage_1445hz",
                 "holdout42_clean_niti_wire_bias_spring_tower_crane_1370hz",
-                "holdout50_clean_harmonic_drive_table_tennis_1051hz")
+                "holdout50_clean_harmonic_drive_table_tennis_1051hz",
+                "holdout57_clean_salted_cage_bragg_mirror_cymbal_player_1571hz")
 
 #: clean records whose core stiffens towards the ends of its stroke, which the diagnosis reads as a
 #: saturation: HOLDOUT34's voice-coil stage on Gent rubber pads that stick and slip (the pads'
@@ -246,7 +255,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "drop at seed 1 and on HOLDOUT49's Galfenol rod at seed 2 (since round 54 not at seed "
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
                                         "every seed, on HOLDOUT53's metal-hydride cell at seed 1; a drift on HOLDOUT54's "
-                                        "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2 "
+                                        "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2; a drift "
+                                        "on HOLDOUT57's salted-cage Bragg mirror at seed 2 "
                                         "(since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
@@ -299,8 +309,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 105/186 runs (33/62 at seed 0) of the combined "
-                                        "cases of the fifty-seven sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 107/189 runs (34/63 at seed 0) of the combined "
+                                        "cases of the fifty-eight sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -357,7 +367,11 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "beside its film's alpha_c relaxation (a rate dependence): nothing named at "
                                         "any seed, `unexplained` at 5.7-7.5 noise floors (round 57); HOLDOUT56's "
                                         "camera's late frames (a delay) beside its polyimide's water uptake (a drift): "
-                                        "read as creep at every seed (round 58); "
+                                        "read as creep at every seed (round 58; since round 59's longer dead times, both named beside a "
+                                        "rate dependence at seed 2); HOLDOUT57's walls' micropores "
+                                        "taking water slowly (creep) beside a two-stream generator's humidity linear "
+                                        "in the drive (an asymmetry): a drift named in place of the creep at seed 1, "
+                                        "nothing named at seed 2 (round 59); "
                                         "HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):

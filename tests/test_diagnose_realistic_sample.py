@@ -1,14 +1,14 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-seven sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-eight sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (61 clean records in all, HOLDOUT33's and HOLDOUT42's left to the slow test since round 58, see
-SLOW_CLEAN; HOLDOUT56's took 9.0 s in round 58's measurement). 88 runs at seed 0; 80 were right in round 58, 79 in round
-57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
+other set (62 clean records in all, HOLDOUT33's and HOLDOUT42's left to the slow test since round 58, see
+SLOW_CLEAN; HOLDOUT57's took 14.1 s in round 59's measurement). 89 runs at seed 0; 80 were right in rounds 59 and 58,
+79 in round 57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -49,7 +49,9 @@ ASYMMETRIC_CLEAN); HOLDOUT54's in round 56: a spin-crossover strip whose crystal
 Slichter-Drickamer bodies, a drift of events named at seed 0 (0.79 noise variances), `explained`, counted wrong, see
 DRIFTING_CLEAN; HOLDOUT55's in round 57: a P(VDF-TrFE) unimorph whose crystallites are relays of the field,
 `explained` with nothing named at seed 0 (an asymmetry at seed 2); HOLDOUT56's in round 58: a VO2 thin-film bimorph
-whose grains switch between the insulating and the metallic phase, `explained` with nothing named). Since
+whose grains switch between the insulating and the metallic phase, `explained` with nothing named; HOLDOUT57's in round
+59: a Bragg mirror of salted mesoporous silica whose cages fill and empty at two humidities, `unexplained` with nothing
+named at seed 0 (2.02 true noise levels), counted wrong, see NOT_PI_CLEAN). Since
 round 45 HOLDOUT35's and HOLDOUT39's clean cores are `explained` by a
 Preisach-type core with nothing named, counted right; since round 47 HOLDOUT36's and HOLDOUT40's small saturations are
 tentative, not named, and those records counted right.
@@ -95,8 +97,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 88
-    assert sum(r["clean"] for r in rows) == 61
+    assert len(rows) == 89
+    assert sum(r["clean"] for r in rows) == 62
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -108,7 +110,8 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 80/88 right in round 58 (HOLDOUT56's clean bimorph right at seed 0; HOLDOUT33's and HOLDOUT42's clean
+    # 80/89 right in round 59 (HOLDOUT57's clean Bragg mirror wrong at seed 0: unexplained, nothing named); 80/88 in
+    # round 58 (HOLDOUT56's clean bimorph right at seed 0; HOLDOUT33's and HOLDOUT42's clean
     # records, wrong, left to the slow test, SLOW_CLEAN); 79/89 in round 57 (HOLDOUT55's clean unimorph right at seed 0); 78/88 in round 56 (HOLDOUT54's clean strip wrong at seed 0: a drift); 78/87 in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
     # and the clean records of HOLDOUT21-51, HOLDOUT32's, HOLDOUT33's, HOLDOUT34's, HOLDOUT42's, HOLDOUT46's and
     # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
@@ -147,16 +150,18 @@ def test_a_clean_core_that_is_not_pi_gets_nothing_named(rows):
     # (HOLDOUT32's Dahl friction); HOLDOUT33's Stoner-Wohlfarth armature leaves 5.6-8.3 floors with
     # its parts tentative; HOLDOUT35's capstan cable 1.32 floors at seed 0 with nothing paying; HOLDOUT39's
     # critical-state rod 1.33 floors at seed 0 with nothing paying; HOLDOUT42's shape-memory wire 3.60 floors at
-    # seed 0 with its asymmetry tentative; HOLDOUT50's harmonic drive 1.41 floors at seed 0 with nothing paying
+    # seed 0 with its asymmetry tentative; HOLDOUT50's harmonic drive 1.41 floors at seed 0 with nothing paying;
+    # HOLDOUT57's salted-cage Bragg mirror 2.03 floors at seed 0 with nothing paying (round 59)
     not_pi = [r for r in rows if r["case"] in NOT_PI_CLEAN]
-    assert len(not_pi) == len(NOT_PI_CLEAN) - len(SLOW_CLEAN) == 4
+    assert len(not_pi) == len(NOT_PI_CLEAN) - len(SLOW_CLEAN) == 5
     assert all(not r["effects"] for r in not_pi), _table(not_pi)
     # since round 45 a Preisach-type core is taken where it explains a record left unexplained with nothing
     # named: HOLDOUT39's rod (1.10 noise floors) at seed 0, within the explained bound (about 1.45) by a margin no
     # BLAS moves, and HOLDOUT35's cable (1.01) until round 57, since when the blocks split explains the cable with
-    # the PI model and nothing named before a Preisach-type core is tried; the other four stay unexplained (the
-    # KP core 1.66, 3.88 and 3.42 on HOLDOUT32's, HOLDOUT33's and HOLDOUT42's, the last two in the slow test only, and,
-    # on HOLDOUT50's harmonic drive, 1.50 against the PI model's 1.41: not taken)
+    # the PI model and nothing named before a Preisach-type core is tried; the other five stay unexplained (the
+    # KP core 1.66, 3.88 and 3.42 on HOLDOUT32's, HOLDOUT33's and HOLDOUT42's, the last two in the slow test only,
+    # 3.86 on HOLDOUT57's mirror against the PI model's 2.03, and, on HOLDOUT50's harmonic drive, 1.50 against the PI
+    # model's 1.41: not taken)
     taken = {r["case"].split("_")[0] for r in not_pi if (r["preisach_core"] or {}).get("taken")}
     assert taken == {"holdout39"}, _table(not_pi)
     explained = taken | {"holdout35"}
