@@ -19,7 +19,8 @@ import pytest
 
 from hystcomp.diagnose import diagnose
 from hystcomp.diagnose.small_steps import (EXPLAINED_FIRST_ASYMMETRY_GAIN, EXPLAINED_LATER_SATURATION_GAIN,
-                                          EXPLAINED_SHAPE_GAIN, LATER_GAIN, UNEXPLAINED_SHAPE_GAIN)
+                                          EXPLAINED_SHAPE_GAIN, LATER_DRIFT_GAIN, LATER_GAIN,
+                                          UNEXPLAINED_SHAPE_GAIN)
 from hystcomp.diagnose.small_steps import small_later_steps as _small_later_steps
 
 
@@ -50,9 +51,9 @@ def test_a_later_step_under_the_bound_is_tentative_and_the_first_stays_named():
 
 def test_the_bound_is_three_noise_variances():
     assert LATER_GAIN == 3.0
-    below = _run([_step("creep", 100.0), _step("drift", 2.99)])
-    above = _run([_step("creep", 100.0), _step("drift", 3.01)])
-    assert below["effects"] == ["creep"] and above["effects"] == ["creep", "drift"]
+    below = _run([_step("creep", 100.0), _step("delay", 2.99)])
+    above = _run([_step("creep", 100.0), _step("delay", 3.01)])
+    assert below["effects"] == ["creep"] and above["effects"] == ["creep", "delay"]
 
 
 def _loss(effect, gain, loss):
@@ -68,13 +69,13 @@ def test_a_small_step_the_final_model_needs_stays_named():
 
 
 def test_the_loss_without_it_has_the_same_bound():
-    below = _run([_step("creep", 100.0), _loss("drift", 1.0, 2.99)])
-    above = _run([_step("creep", 100.0), _loss("drift", 1.0, 3.01)])
-    assert below["effects"] == ["creep"] and above["effects"] == ["creep", "drift"]
+    below = _run([_step("creep", 100.0), _loss("delay", 1.0, 2.99)])
+    above = _run([_step("creep", 100.0), _loss("delay", 1.0, 3.01)])
+    assert below["effects"] == ["creep"] and above["effects"] == ["creep", "delay"]
     said = below["steps"][1]["evidence"]["small_later_step"]
     assert "only 1.00 noise variances, and the final model loses 2.99 without it (naming needs 3)" in said
     # a step whose own gain is large stays named whatever the final model loses without it
-    assert _run([_step("creep", 100.0), _loss("drift", 3.5, 0.4)])["effects"] == ["creep", "drift"]
+    assert _run([_step("creep", 100.0), _loss("delay", 3.5, 0.4)])["effects"] == ["creep", "delay"]
 
 
 @pytest.mark.parametrize("case", ["first", "explained", "paired", "dropped", "negative", "named_twice"])
@@ -211,8 +212,9 @@ def test_the_bound_on_a_record_explained(gain, loss, named):
     assert out["verdict"] == "explained"
 
 
-@pytest.mark.parametrize("effect", ["initial_state", "drift", "gain_drift", "delay", "rate_dependence", "creep"])
+@pytest.mark.parametrize("effect", ["initial_state", "gain_drift", "delay", "rate_dependence", "creep"])
 def test_on_a_record_explained_other_effects_stay_named(effect):
+    # a later drift is held to LATER_DRIFT_GAIN on any record (round 60)
     out = _run([_step("asymmetry", 30.0), _step(effect, 0.5)], verdict="explained")
     assert out["effects"] == ["asymmetry", effect] and out["tentative"] == []
 
@@ -340,3 +342,39 @@ def test_the_blocks_are_weighed_against_the_effects_the_end_would_name():
     assert end["steps"] == before and end["effects"] == ["asymmetry", "initial_state"]
     chosen = choose_split(end, _split("explained", ["asymmetry"], 1.2, blocks=True), lambda s: None)
     assert chosen["verdict"] == "explained" and chosen["effects"] == ["asymmetry"]
+
+
+@pytest.mark.parametrize("verdict", ["explained", "unexplained"])
+@pytest.mark.parametrize("gain, loss, named", [(4.99, None, False), (5.01, None, True), (1.53, 1.53, False),
+                                               (3.3, 4.91, False), (2.0, 5.88, True), (-2.7, 0.74, True)])
+def test_a_later_drift_needs_five_noise_variances_on_any_record(verdict, gain, loss, named):
+    # round 60: over the fifty-eight committed sets the seven drifts named after the first step whose gain and loss
+    # were both under 5 noise variances (1.53 ... 4.91) were all unlabelled; the smallest labelled ones are 5.88 and
+    # 5.90 (pairs with a saturation and with an asymmetry); a step with a negative gain is judged elsewhere
+    assert LATER_DRIFT_GAIN == 5.0
+    step = _step("drift", gain) if loss is None else _loss("drift", gain, loss)
+    out = _run([_step("rate_dependence", 27.1), step], verdict=verdict)
+    assert out["verdict"] == verdict
+    assert out["effects"] == (["rate_dependence", "drift"] if named else ["rate_dependence"])
+    if not named:
+        assert out["tentative"] == ["drift"] and out["steps"][1]["tentative"]
+        said = out["steps"][1]["evidence"]["small_later_step"]
+        where = "explained" if verdict == "explained" else "left unexplained"
+        assert said.startswith(f"added after the first step on a record {where}, it lowers the held-out mean square "
+                               f"by only {gain:.2f} noise variances")
+        assert said.endswith("(naming needs 5 for a drift after the first step, which may be taking up a slow misfit "
+                             "the earlier parts leave): tentative, not named")
+        assert out["stopped"].endswith(f"tentative: drift ({gain:.2f}), later steps gaining under 5 noise variances")
+
+
+def test_a_first_drift_and_a_later_gain_drift_keep_their_bounds():
+    # the drift's bound is for a drift after the first step: a first drift is left alone on any record; a gain drift
+    # after the first step keeps the bound of 3 (labelled ones gained 1-3 at later steps)
+    for verdict in ("explained", "unexplained"):
+        assert _run([_step("drift", 0.8)], verdict)["effects"] == ["drift"]
+    assert _run([_step("creep", 40.0), _step("gain_drift", 3.5)])["effects"] == ["creep", "gain_drift"]
+    assert _run([_step("creep", 40.0), _step("gain_drift", 2.5)])["effects"] == ["creep"]
+    assert _run([_step("creep", 40.0), _step("gain_drift", 0.5)], "explained")["effects"] == ["creep", "gain_drift"]
+    # a pair's drift is judged with its pair
+    paired = [_step("asymmetry", 60.0), _step("drift", 2.0, evidence={"paired": "fitted jointly with asymmetry"})]
+    assert _run(paired, "explained")["effects"] == ["asymmetry", "drift"]
