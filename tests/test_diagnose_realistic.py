@@ -50,8 +50,10 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1374/1785 (77.0 %) over the fifty-eight sets in round 59
-# (1359/1755 over the fifty-seven earlier sets: round 59's dead time searched on past its first bound made HOLDOUT52's
+# The issue's criterion is over three seeds: 1399/1815 (77.1 %) over the fifty-nine sets in round 60
+# (1380/1785 over the fifty-eight earlier sets: round 60's bound on drifts added after the first step made six runs
+# right, none wrong; HOLDOUT58 19/30 when fresh and as committed: a chip of snapping buckled beams; 1374 in round 59;
+# 1359/1755 over the fifty-seven earlier sets: round 59's dead time searched on past its first bound made HOLDOUT52's
 # water-line delay right at every seed and HOLDOUT56's USB buffer at seeds 0 and 1, and HOLDOUT35's bead profiler
 # wrong at seed 2; HOLDOUT57 15/30 when fresh and as
 # committed: a salted-cage Bragg mirror; 1355 in round 58; 1336/1725 over the fifty-six earlier sets: round 58's drift test beyond slow cosines in time made five drift runs of
@@ -67,7 +69,7 @@ def test_no_crash(rows):
 # metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 459/595 (77.1 %), 535.5 needed, so
+# open. At seed 0, as run here, 469/605 (77.5 %), 544.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -78,27 +80,28 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55), 19/30 (HOLDOUT56) and 15/30 (HOLDOUT57)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55), 19/30 (HOLDOUT56), 15/30 (HOLDOUT57) and 19/30 (HOLDOUT58)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1374/1785 right over three seeds of the fifty-eight sets "
-                                         "(77.0 %); at seed 0 459/595 (77.1 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1399/1815 right over three seeds of the fifty-nine sets "
+                                         "(77.1 %); at seed 0 469/605 (77.5 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 459/595 right at seed 0 in round 59 (77.1 %; HOLDOUT57 5 of 10, round 59's dead time past its
-    # first bound two more of the fifty-seven earlier sets; 452/585 in round 58, HOLDOUT56 6 of 10, round 58's drift
-    # test one more of the fifty-six earlier sets; 445/575 in round 57, HOLDOUT55 5 of 10, round 57's wider blocks rule
+    # regression guard: 469/605 right at seed 0 in round 60 (77.5 %; HOLDOUT58 7 of 10, round 60's bound on later
+    # drifts three more of the fifty-eight earlier sets; 459/595 in round 59, HOLDOUT57 5 of 10, round 59's dead time
+    # past its first bound two more of the fifty-seven earlier sets; 452/585 in round 58, HOLDOUT56 6 of 10, round
+    # 58's drift test one more of the fifty-six earlier sets; 445/575 in round 57, HOLDOUT55 5 of 10, round 57's wider blocks rule
     # one more of the fifty-five earlier sets; 439/565 in round 56, HOLDOUT54
     # 4 of 10, round 56's creep back two more of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round
-    # 54); at least 449, ten runs of
+    # 54); at least 459, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 595
-    assert right >= 449, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 605
+    assert right >= 459, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -108,7 +111,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 595 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 605 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -149,7 +152,7 @@ def test_answers_as_committed(rows):
 #: and emptying at a lower one, Kelvin with Cohan's menisci, beside a reversible BET film on the empty cages: relays
 #: and a reversible part read through the layers' index, not a PI core; a 12-play PI fit leaves 1.49-1.61 sigma),
 #: fresh in round 59: unexplained with nothing named at 2.02 true noise levels at seed 0, `explained` with nothing
-#: named at seed 1 (1.28) and with a drift at seed 2 (1.34)
+#: named at seed 1 (1.28) and with a drift at seed 2 (1.34; since round 60's bound on later drifts, nothing named)
 NOT_PI_CLEAN = ("holdout32_clean_dahl_guide_turntable_scratching_1715hz",
                 "holdout33_clean_sw_armature_footbridge_crowd_sway_1725hz",
                 "holdout35_clean_bowden_cable_cheyne_stokes_breathing_1335hz",
@@ -257,7 +260,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
                                         "every seed, on HOLDOUT53's metal-hydride cell at seed 1; a drift on HOLDOUT54's "
                                         "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2; a drift "
-                                        "on HOLDOUT57's salted-cage Bragg mirror at seed 2 "
+                                        "on HOLDOUT58's snapping-beam chip at seed 1 (since round 60 not on "
+                                        "HOLDOUT57's salted-cage Bragg mirror at seed 2: a later drift needs 5 noise variances) "
                                         "(since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
                                         "HOLDOUT36's iron and HOLDOUT40's disc are tentative, not named)")
@@ -310,8 +314,8 @@ def test_every_explained_verdict_within_the_true_noise(rows):
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 107/189 runs (34/63 at seed 0) of the combined "
-                                        "cases of the fifty-eight sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 110/192 runs (35/64 at seed 0) of the combined "
+                                        "cases of the fifty-nine sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
