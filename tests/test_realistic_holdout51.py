@@ -54,6 +54,7 @@ from test_realistic_generator import (_assert_drives_start_at_zero, _assert_meas
                                       _assert_spans_and_rates, _linear_misfit, _rms)
 from realistic.set_checks import assert_knots_evaluator as _knots_evaluator
 from realistic.set_checks import beyond_gain_and_offset as _fit, holds as _holds, pi_fit_rms as _pi_fit_rms
+from realistic.set_checks import never_still as _never_still
 from test_realistic_holdout50 import _big, _full_both_ways
 
 pytestmark = pytest.mark.slow
@@ -91,11 +92,6 @@ def _core_cached(name, seed):
 def _core(e, v, stack=None):
     """The rate-independent stack's reading (um at the lever's tip) for the drive v."""
     return m51.core_reading(e, m51.amp_voltage(e, v), stack)
-
-
-def _never_still(e):
-    kx = [k[1] for k in e["knots"]]
-    return all(a != b for a, b in zip(kx, kx[1:]))
 
 
 # ---- the set ----

@@ -58,6 +58,7 @@ from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
 from realistic.set_checks import assert_knots_evaluator as _knots_evaluator, assert_minimum_jerk as _minimum_jerk
 from realistic.set_checks import assert_relay_core as _relay_core, beyond_gain_and_offset as _fit, holds as _holds
 from realistic.set_checks import pi_fit_rms as _pi_fit_rms
+from realistic.set_checks import never_still as _never_still
 
 pytestmark = pytest.mark.slow
 
@@ -106,11 +107,6 @@ def _full_both_ways(e):
     """The programme reaches the full reach both ways (its knots), and the sampled drive within 1e-3 of it."""
     kx = [k[1] for k in e["knots"]]
     return max(kx) == 1.0 and min(kx) == -1.0 and e["x"].max() > 0.999 and e["x"].min() < -0.999
-
-
-def _never_still(e):
-    kx = [k[1] for k in e["knots"]]
-    return all(a != b for a, b in zip(kx, kx[1:]))
 
 
 # ---- the set ----

@@ -57,6 +57,7 @@ from realistic import signals58 as s58
 from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
 from realistic.set_checks import assert_knots_evaluator as _knots_evaluator, assert_minimum_jerk as _minimum_jerk
 from realistic.set_checks import assert_relay_core as _relay_core, holds as _holds, pi_fit_rms as _pi_fit_rms
+from realistic.set_checks import never_still as _never_still
 from test_realistic_holdout50 import _big, _full_both_ways, _lopsided
 
 pytestmark = pytest.mark.slow
@@ -89,11 +90,6 @@ def _core_cached(name, seed):
     """The core's reading for a record's clean drive, from the rest state (cached: several checks use it)."""
     e = _rec(name, seed).extra
     return m58.core_reading(e, e["drive"])
-
-
-def _never_still(e):
-    kx = [k[1] for k in e["knots"]]
-    return all(a != b for a, b in zip(kx, kx[1:]))
 
 
 # ---- the set ----

@@ -1,8 +1,8 @@
 """Small tools the later sets' law tests (``tests/test_realistic_holdoutNN.py``, HOLDOUT31 on)
 share: every play's output written from the play's definition, the closeness of a record to a
 Prandtl-Ishlinskii model (12 plays fitted by NNLS), how far an effect moves a reading beyond a gain
-and an offset on its core, a dead time checked on a finer grid, a segment of a branch and the holds
-of a drive. Written once here (they had been copied into every set's test); each test binds them under
+and an offset on its core, a dead time checked on a finer grid, a segment of a branch, the holds
+of a drive and whether a never-still programme's knots ever repeat a position. Written once here (they had been copied into every set's test); each test binds them under
 its old private names.
 """
 
@@ -59,6 +59,13 @@ def read_late_misfit(t, y, delay, core_of_drive, drive_at, fine=8):
 def seg(a, b, n=60):
     """n points from a (excluded) to b (included)."""
     return np.linspace(a, b, n + 1)[1:]
+
+
+def never_still(extra):
+    """Whether a programme's knots (``extra["knots"]``: (time, position) pairs) never give two neighbours the same
+    position: a never-still programme, which moves from every knot to the next."""
+    kx = [k[1] for k in extra["knots"]]
+    return all(a != b for a, b in zip(kx, kx[1:]))
 
 
 def holds(v, min_len):
