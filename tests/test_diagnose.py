@@ -78,7 +78,7 @@ def test_report_json_and_model_reproduces_heldout_rms():
     base = rep.base_model.simulate(d.v)
     assert np.sqrt(np.mean((d.y[k:] - base[k:]) ** 2)) == pytest.approx(rep.rms_before, rel=1e-9)
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     for key in ("verdict", "noise_floor", "effects", "steps", "untested", "stopped", "remaining",
                 "rms_before_pct", "rms_after_pct", "held_out_blocks", "other_split"):
         assert key in js

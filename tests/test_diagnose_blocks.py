@@ -73,7 +73,7 @@ def test_a_drift_that_turns_back_is_named_on_blocks_spread_over_the_record():
     text = rep.report()
     assert "5 blocks spread over the record" in text and "this diagnosis is taken" in text
     d = rep.to_dict()
-    assert d["schema_version"] == 29 and len(d["held_out_blocks"]) == N_BLOCKS
+    assert d["schema_version"] == 30 and len(d["held_out_blocks"]) == N_BLOCKS
     assert d["other_split"]["held_out"] == "end"
     # the figures mark each block's start and end
     import matplotlib.pyplot as plt

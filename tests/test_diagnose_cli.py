@@ -41,7 +41,7 @@ def test_json_schema(drift_csv, capsys, tmp_path):
                              "--plots", str(tmp_path / "figs"), "--units", "V,um"], capsys)
     assert status == 0, err
     js = json.loads(out)                 # exactly one JSON object on stdout
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert list(js)[:4] == ["schema_version", "verdict", "noise_floor", "noise_floor_pct"]
     assert js["effects"][0] == "drift" and js["verdict"] == "explained"
     assert js["rms_after"] < 0.5 * js["rms_before"]

@@ -176,7 +176,7 @@ def test_a_symmetric_core_is_read_as_the_cores_shape(kim):
     assert "read as the core's shape" in text and "core: PI with point-symmetric envelopes" in text
     assert "caution" not in text
     js = json.loads(json.dumps(kim.to_dict()))
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["core_shape"]["step"] == kim.core_shape["step"]
     assert js["steps"][kim.core_shape["step"] - 1]["core_shape"] is True
     assert "asymmetry" not in js["effects"]

@@ -77,7 +77,7 @@ def test_the_model_reproduces_the_reported_rms_and_inverts(sagging):
 
 def test_the_json_carries_the_relaxations_sign(sagging):
     js = json.loads(sagging[1].to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["steps"][0]["evidence"]["signature"]["relaxation_per_step"] < 0
 
 

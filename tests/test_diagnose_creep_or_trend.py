@@ -79,7 +79,7 @@ def test_log_creep_is_named_creep_with_the_drift_a_near_tie(log_creep):
     assert "creep, which the input's steps draw (a drift draws from time alone), is taken on the near tie" in text
     assert "effects: creep (or drift)" in text
     js = json.loads(json.dumps(rep.to_dict()))
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["steps"][0]["evidence"]["creep_or_trend"]["held_out_chose"] == chose
     # the model reproduces the reported held-out RMS (1e-9 relative)
     held = ~rep._rec.train

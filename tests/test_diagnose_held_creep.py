@@ -56,7 +56,7 @@ def test_creep_stays_named_beside_a_fold_no_part_draws(folded):
 
 def test_the_json_carries_why_creep_stayed_named(folded):
     js = json.loads(folded.to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["effects"] == ["creep"] and "asymmetry" in js["tentative_effects"]
     why = [s["evidence"].get("named_beyond_vocabulary") for s in js["steps"] if s["effect"] == "creep"]
     assert why and "no rate-independent core does" in why[0]

@@ -74,5 +74,5 @@ def test_under_a_chirp_a_dynamic_stage_is_judged_inside_the_fitted_rates():
     rms = float(np.sqrt(np.mean((y - auto.model.simulate(v))[held] ** 2)))
     assert rms == pytest.approx(auto.rms_heldout, rel=1e-9)
     d = json.loads(auto.to_json())
-    assert d["schema_version"] == 29 and d["held_out_moved_faster"] == pytest.approx(auto.held_out_moved_faster)
+    assert d["schema_version"] == 30 and d["held_out_moved_faster"] == pytest.approx(auto.held_out_moved_faster)
     assert "times as fast as the rest" in auto.report()

@@ -107,7 +107,7 @@ def test_flag_core_extensions_are_tentative_not_named():
     assert rep.effects == [], rep.report()
     assert "out_of_vocabulary" in rep.remaining, rep.remaining
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["effects"] == [] and js["tentative_effects"] == rep.tentative
     assert 0.0 <= js["misfit_share_explained"] < 0.9
     if rep.tentative:

@@ -134,7 +134,7 @@ def test_a_core_that_is_not_pi_is_explained_by_a_preisach_type_core(capstan):
     again = model_from_dict(json.loads(json.dumps(rep.model.to_dict())))
     assert type(again) is KP and np.array_equal(again.simulate(rec.v), rep.model.simulate(rec.v))
     js = json.loads(rep.to_json())
-    assert js["schema_version"] == 29 and js["preisach_core"]["explains"] is True
+    assert js["schema_version"] == 30 and js["preisach_core"]["explains"] is True
     assert js["preisach_core"]["taken"] is True and js["verdict"] == "explained"
     assert js["model"][0]["kind"] == "preisach_core" and js["model"][0]["cells"] == CELLS
     text = rep.report()

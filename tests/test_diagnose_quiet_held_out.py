@@ -59,7 +59,7 @@ def test_a_quiet_end_is_cautioned_in_the_report_the_json_and_the_figure():
     assert d.held_out_input_share < QUIET
     assert "caution: the held-out part moves the input over only" in d.report()
     js = json.loads(d.to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["held_out_input_share"] == pytest.approx(np.ptp(v[~d._rec.train]) / np.ptp(v), rel=1e-12)
     fig = d.plots()["gap"]
     assert "it tests little" in fig._suptitle.get_text().replace("\n", " ")

@@ -70,7 +70,7 @@ def test_a_clean_biased_record_is_explained_from_either_rest_point(start, origin
     text = rep.report()
     assert f"the plays start at rest at {origin:.4g}" in text
     d = json.loads(rep.to_json())
-    assert d["schema_version"] == 29 and d["rest"]["origin"] == origin
+    assert d["schema_version"] == 30 and d["rest"]["origin"] == origin
 
 
 def test_a_memory_beyond_both_rest_points_is_still_an_initial_state():

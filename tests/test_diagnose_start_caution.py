@@ -85,7 +85,7 @@ def test_prior_use_at_the_end_is_named_and_cautioned():
     assert "initial_state" in d.effects
     assert "caution: the record starts at the low end of its input range" in d.report()
     js = json.loads(d.to_json())
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["start_in_input_range"] == pytest.approx(d._rec.start_in_input_range, rel=1e-12) and \
         js["start_in_input_range"] < START_END
     assert "may be prior use" in d.plots()["gap"]._suptitle.get_text().replace("\n", " ")

@@ -95,7 +95,7 @@ def test_a_memory_is_named_where_a_drift_gained_a_hair_more(prefix, seed, held_o
     text = rep.report()
     assert "the training part, which holds the record's start, takes initial_state" in text
     js = json.loads(json.dumps(rep.to_dict()))
-    assert js["schema_version"] == 29
+    assert js["schema_version"] == 30
     assert js["steps"][0]["evidence"]["start_or_trend"]["taken"] == told["taken"]
 
 

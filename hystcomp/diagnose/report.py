@@ -12,7 +12,7 @@ from .record import caution, quiet_caution, start_caution
 from .preisach_core import describe as describe_preisach_core
 from .signatures import SHIFT_OR_LAG
 
-SCHEMA_VERSION = 29
+SCHEMA_VERSION = 30
 
 
 def _jsonable(x):
@@ -375,7 +375,7 @@ class Diagnosis:
         return [c for c in out if c]
 
     def to_dict(self):
-        """The JSON object of ``hystcomp diagnose --json`` (schema version 26; 5
+        """The JSON object of ``hystcomp diagnose --json`` (schema version 30; 5
         added ``held_out_beyond_fitted_range``, 6 ``held_out_moved``, 7
         ``held_out_blocks`` and ``other_split``, 8 ``rest``, 9
         ``held_out_moved_faster``, 10 ``explained_limit`` and the noise
@@ -402,7 +402,9 @@ class Diagnosis:
         in the ``evidence`` of a step where creep was taken over a drift on a
         near tie held out, 25 ``preisach_core``, 26 its ``taken``,
         ``lag1_autocorrelation`` and ``pi_remaining``; when taken, ``model``
-        describes the KP core).
+        describes the KP core; 27 ``clipped`` and 30 ``final_high_frequency``
+        in ``noise_floor_method``, 28 ``named_beyond_vocabulary`` and 29
+        ``relaxation_per_step`` in a step's ``evidence``).
 
         Returns
         -------

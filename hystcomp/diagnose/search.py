@@ -12,7 +12,7 @@ from ..identify.search import FIT_ERRORS, PartsModel, Structure
 # the base model's pieces, importable from here as before
 from .base import REST_BIC, base_context, misfit_share, play_thresholds, rest_point, step_kind  # noqa: F401
 from .held_creep import creep_beyond_core
-from .noise import HOLDS_CARRIED, holds_carried_structure, noise_floor
+from .noise import HOLDS_CARRIED, final_residual_floor, holds_carried_structure, noise_floor
 from .off_centre import off_centre_test
 from .preisach_core import preisach_core
 from .record import BEYOND, N_BLOCKS, Record, caution
@@ -457,8 +457,11 @@ def _search(t, v, y, effects, validation, max_effects, n_thresholds, thresholds,
     rms_final = _rms((rec.measured - model.simulate(rec.v))[held])
     present = {k: x for k, x in final_ev.items() if x["present"] and k not in untested}
     remaining = {}
-    if rms_final > explained_limit * sigma:
-        remaining["held_out"] = (f"held-out RMS {rms_final:.4g} is {rms_final / sigma:.3g} x the noise floor "
+    # the verdict's floor: the high-frequency part again on the final residual, if lower
+    floor = final_residual_floor(rec, rec.y - cur.prediction, sigma, noise_info)
+    if rms_final > explained_limit * floor:
+        on = "" if floor == sigma else f" measured on the final model's residual ({floor:.4g}; the base's {sigma:.4g})"
+        remaining["held_out"] = (f"held-out RMS {rms_final:.4g} is {rms_final / floor:.3g} x the noise floor{on} "
                                  f"(explained needs <= {explained_limit:.3g}: {EXPLAINED} less the floor's "
                                  f"standard error, {100 * se:.2g} %)")
     for k, x in present.items():
