@@ -311,6 +311,15 @@ Vangbo's buckled beam) and snapping at its branches' folds under the soft spring
 amplitudes, thicknesses and imperfections spread, all sharing the shuttle's travel (avalanches, return-point memory
 kept); at rest in the state the controller's decaying dither leaves before every record but the initial-state case's;
 how close a PI model of 12 plays comes to its clean record is measured in tests/test_realistic_holdout58.py.
+:data:`HOLDOUT59` (``cases_holdout59.py``) was written after HOLDOUT58 was measured, by a session that did not read how
+the diagnosis decides; it has not been measured yet and is kept out of :data:`ALL` until it is (run once, for the next
+round's measurement). Its core is a thermoresponsive hydrogel film actuator: a film of PNIPAM microgels in a loose
+polyacrylamide matrix on a heater chip under a temperature loop, read by an interferometer: 8000 classes of microgels,
+each collapsing in its volume phase transition when heated past its T_c and reswelling only some degrees below it (the
+collapsed globule's hydrogen bonds), their T_c spread over a blend of copolymer batches, a swollen one deswelling a
+little ahead of its transition; at rest in the state the controller's decaying conditioning leaves before every record
+but the initial-state case's; how close a PI model of 12 plays comes to its clean record is measured in
+tests/test_realistic_holdout59.py.
 """
 
 from .record import FAMILIES, Record, family  # noqa: F401
@@ -373,6 +382,7 @@ from .cases_holdout55 import HOLDOUT55  # noqa: F401
 from .cases_holdout56 import HOLDOUT56  # noqa: F401
 from .cases_holdout57 import HOLDOUT57  # noqa: F401
 from .cases_holdout58 import HOLDOUT58  # noqa: F401
+from .cases_holdout59 import HOLDOUT59  # noqa: F401  (not in ALL until measured)
 
 ALL = {**TUNING, **HOLDOUT, **HOLDOUT2, **HOLDOUT3, **HOLDOUT4, **HOLDOUT5, **HOLDOUT6, **HOLDOUT7, **HOLDOUT8,
        **HOLDOUT9, **HOLDOUT10, **HOLDOUT11, **HOLDOUT12, **HOLDOUT13, **HOLDOUT14, **HOLDOUT15, **HOLDOUT16,
@@ -391,4 +401,4 @@ __all__ = ["FAMILIES", "Record", "family", "TUNING", "HOLDOUT", "HOLDOUT2", "HOL
            "HOLDOUT33", "HOLDOUT34", "HOLDOUT35", "HOLDOUT36", "HOLDOUT37", "HOLDOUT38", "HOLDOUT39", "HOLDOUT40",
            "HOLDOUT41", "HOLDOUT42", "HOLDOUT43", "HOLDOUT44", "HOLDOUT45", "HOLDOUT46", "HOLDOUT47", "HOLDOUT48",
            "HOLDOUT49", "HOLDOUT50", "HOLDOUT51", "HOLDOUT52", "HOLDOUT53", "HOLDOUT54",
-           "HOLDOUT55", "HOLDOUT56", "HOLDOUT57", "HOLDOUT58", "ALL"]
+           "HOLDOUT55", "HOLDOUT56", "HOLDOUT57", "HOLDOUT58", "HOLDOUT59", "ALL"]
