@@ -61,8 +61,9 @@ HOLDOUT55 was run once for the fifty-seventh round's measurement (16 of 30 right
 HOLDOUT56 was run once for the fifty-eighth round's measurement (19 of 30 right) and is part of ALL since.
 HOLDOUT57 was run once for the fifty-ninth round's measurement (15 of 30 right) and is part of ALL since.
 HOLDOUT58 was run once for the sixtieth round's measurement (19 of 30 right) and is part of ALL since.
+HOLDOUT59 was run once for the sixty-first round's measurement (20 of 30 right) and is part of ALL since.
 
-Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout58|all] [--seeds 3]
+Run: python benchmarks/eval_diagnose_realistic.py [--set tuning|holdout|holdout2|...|holdout59|all] [--seeds 3]
      [--cases NAME ...] [--json OUT] [--csv OUT] [--compare SAVED] [--perturb SHARE] [--jobs 2]
      python benchmarks/eval_diagnose_realistic.py --summary OUT     (the figures of a saved run, again)
      python benchmarks/eval_diagnose_realistic.py --summary NEW --compare SAVED   (run by run against another)

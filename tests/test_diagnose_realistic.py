@@ -50,7 +50,9 @@ def test_no_crash(rows):
     assert not bad, _table(bad)
 
 
-# The issue's criterion is over three seeds: 1399/1815 (77.1 %) over the fifty-nine sets in round 60
+# The issue's criterion is over three seeds: 1420/1845 (77.0 %) over the sixty sets in round 61 (1400/1815 over the
+# fifty-nine earlier sets: round 61's verdict judged on the final residual's noise floor made HOLDOUT46's laser sensor
+# right at seed 0, none wrong; HOLDOUT59 20/30 when fresh and as committed: a PNIPAM microgel film); 1399 in round 60
 # (1380/1785 over the fifty-eight earlier sets: round 60's bound on drifts added after the first step made six runs
 # right, none wrong; HOLDOUT58 19/30 when fresh and as committed: a chip of snapping buckled beams; 1374 in round 59;
 # 1359/1755 over the fifty-seven earlier sets: round 59's dead time searched on past its first bound made HOLDOUT52's
@@ -69,7 +71,7 @@ def test_no_crash(rows):
 # metal-hydride cell; the fifty-two sets before HOLDOUT52 1264/1605; 1260 in round 53; round 54's noise floor without clipped samples and its rule on first asymmetries of explained
 # records made the clean records of HOLDOUT49, seed 0, and HOLDOUT51, every seed, right; HOLDOUT51 14/30 when fresh,
 # 17/30 as committed: a PMN-PT stack; HOLDOUT52 3/30 when fresh and as committed: a phase-change film), so it stays
-# open. At seed 0, as run here, 469/605 (77.5 %), 544.5 needed, so
+# open. At seed 0, as run here, 476/615 (77.4 %), 553.5 needed, so
 # this test fails (XFAIL; it passed by half a run before HOLDOUT21 joined); a
 # decision that sits on a threshold may fall either way on another machine's BLAS, so a pass is reported
 # (XPASS), not an error; the regression guard below holds the line. On each fresh set when it
@@ -80,28 +82,29 @@ def test_no_crash(rows):
 # (HOLDOUT20), 23/30 (HOLDOUT21), 20/30 (HOLDOUT22), 26/30 (HOLDOUT23), 24/30 (HOLDOUT24), 21/30
 # (HOLDOUT25), 24/30 (HOLDOUT26), 22/30 (HOLDOUT27), 27/30 (HOLDOUT28), 28/30 (HOLDOUT29), 23/30
 # (HOLDOUT30), 21/30 (HOLDOUT31), 15/30 (HOLDOUT32), 3/30 (HOLDOUT33), 7/30 (HOLDOUT34), 9/30 (HOLDOUT35), 19/30 (HOLDOUT36)
-# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55), 19/30 (HOLDOUT56), 15/30 (HOLDOUT57) and 19/30 (HOLDOUT58)
+# 12/30 (HOLDOUT37), 20/30 (HOLDOUT38), 13/30 (HOLDOUT39), 16/30 (HOLDOUT40), 26/30 (HOLDOUT41), 6/30 (HOLDOUT42), 17/30 (HOLDOUT43), 20/30 (HOLDOUT44), 8/30 (HOLDOUT45), 22/30 (HOLDOUT46), 19/30 (HOLDOUT47), 24/30 (HOLDOUT48), 22/30 (HOLDOUT49), 16/30 (HOLDOUT50), 14/30 (HOLDOUT51), 3/30 (HOLDOUT52), 17/30 (HOLDOUT53), 15/30 (HOLDOUT54), 16/30 (HOLDOUT55), 19/30 (HOLDOUT56), 15/30 (HOLDOUT57), 19/30 (HOLDOUT58) and 20/30 (HOLDOUT59)
 # (docs/diagnose.md). One BLAS thread per process, as measured (one_blas_thread).
-@pytest.mark.xfail(strict=False, reason="issue 10 open: 1399/1815 right over three seeds of the fifty-nine sets "
-                                         "(77.1 %); at seed 0 469/605 (77.5 %)")
+@pytest.mark.xfail(strict=False, reason="issue 10 open: 1420/1845 right over three seeds of the sixty sets "
+                                         "(77.0 %); at seed 0 476/615 (77.4 %)")
 def test_right_verdict_in_90_percent_of_runs(rows):
     right = sum(r["right"] for r in rows)
     assert right >= 0.9 * len(rows), f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # regression guard: 469/605 right at seed 0 in round 60 (77.5 %; HOLDOUT58 7 of 10, round 60's bound on later
+    # regression guard: 476/615 right at seed 0 in round 61 (77.4 %; HOLDOUT59 6 of 10, round 61's verdict floor one
+    # more of the fifty-nine earlier sets; 469/605 in round 60, HOLDOUT58 7 of 10, round 60's bound on later
     # drifts three more of the fifty-eight earlier sets; 459/595 in round 59, HOLDOUT57 5 of 10, round 59's dead time
     # past its first bound two more of the fifty-seven earlier sets; 452/585 in round 58, HOLDOUT56 6 of 10, round
     # 58's drift test one more of the fifty-six earlier sets; 445/575 in round 57, HOLDOUT55 5 of 10, round 57's wider blocks rule
     # one more of the fifty-five earlier sets; 439/565 in round 56, HOLDOUT54
     # 4 of 10, round 56's creep back two more of the fifty-four earlier sets; 433/555 in round 55, 427/545 in round
-    # 54); at least 459, ten runs of
+    # 54); at least 466, ten runs of
     # margin for decisions that sit on a threshold (a count, not a share: until round 34 it was 85 %
     # of the runs, which HOLDOUT33's 1 of 10 at seed 0 brought within three runs of the measured)
     right = sum(r["right"] for r in rows)
-    assert len(rows) >= 605
-    assert right >= 459, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert len(rows) >= 615
+    assert right >= 466, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 #: the committed runs (every set at seeds 0-2, as measured; tests/test_diagnose_results_file.py checks the docs
@@ -111,7 +114,7 @@ RESULTS = os.path.join(HERE, "..", "benchmarks", "results", "diagnose_realistic.
 
 def test_answers_as_committed(rows):
     # the seed-0 answers (named effects and verdict) of the committed runs, run by run: a decision changed without
-    # its runs measured again and saved shows here.  At most 10 of 605 may differ, the regression guard's margin:
+    # its runs measured again and saved shows here.  At most 10 of 615 may differ, the regression guard's margin:
     # round 51 ran every committed run again on a second machine and all 1515 answers were the same, but an answer
     # near a bound can move under a sub-noise change (docs/limits.md), as another BLAS may make: in round 52 noise of
     # 1e-4 of the true noise added to every seed-0 record changed 1 of 515 answers (`--perturb 1e-4`)
@@ -260,7 +263,8 @@ def test_no_effect_named_on_clean_records(rows):
                                         "0, nor on HOLDOUT51's PMN-PT stack), on HOLDOUT52's phase-change film at "
                                         "every seed, on HOLDOUT53's metal-hydride cell at seed 1; a drift on HOLDOUT54's "
                                         "spin-crossover strip at seed 0; an asymmetry on HOLDOUT55's P(VDF-TrFE) unimorph at seed 2; a drift "
-                                        "on HOLDOUT58's snapping-beam chip at seed 1 (since round 60 not on "
+                                        "on HOLDOUT58's snapping-beam chip at seed 1; a saturation on HOLDOUT59's microgel film at seeds 1 and 2 "
+                                        "(since round 60 not on "
                                         "HOLDOUT57's salted-cage Bragg mirror at seed 2: a later drift needs 5 noise variances) "
                                         "(since round 47 the small saturations of "
                                         "HOLDOUT35's cable, "
@@ -287,12 +291,12 @@ def _over(rows):
 # 4.5 % above the true noise: 1.53 true noise levels (fresh in round 36 and as committed; OVER_KNOWN, at
 # most 1.6; the high-frequency estimate was within 0.4 % of the true noise). The issue's own wording,
 # within 1.5x the noise floor, holds for it. HOLDOUT46's polypyrrole bender read by a laser sensor that samples and
-# holds late (round 48, fresh), at seed 0, is `explained` (a dead time and an asymmetry named) at 1.48 estimated noise
-# floors, within its bound of 1.48, but its floor from the residual's high-frequency part, 0.309, is 9 % above the
-# true noise, 0.283 (the sensor's hold leaves fast structure beside the noise; the scatter over its 35 holds, 0.288,
-# is within 1.5 %): 1.61 true noise levels (OVER_KNOWN, at most 1.7).
-OVER_KNOWN = {"holdout34_initial_state_estop_swept_sine_slow_waltz_968hz": 1.6,
-              "holdout46_delay_laser_sensor_latency_hi_hat_587hz": 1.7}
+# holds late (round 48, fresh), at seed 0, was `explained` (a dead time and an asymmetry named) at 1.48 estimated noise
+# floors, within its bound of 1.48, but its floor from the base residual's high-frequency part, 0.309, was 9 % above
+# the true noise, 0.283 (the sensor's hold leaves fast structure beside the noise): 1.61 true noise levels. Since
+# round 61 the verdict is judged against that part measured again on the final model's residual when lower
+# (hystcomp.diagnose.noise.final_residual_floor: 0.304 there), and it is `unexplained`, the dead time named.
+OVER_KNOWN = {"holdout34_initial_state_estop_swept_sine_slow_waltz_968hz": 1.6}
 
 
 def test_explained_means_within_the_noise(rows):
@@ -307,15 +311,14 @@ def test_explained_means_within_the_noise(rows):
 
 
 @pytest.mark.xfail(strict=False, reason="issue 10 open: HOLDOUT34's stage after an emergency stop is explained at "
-                                         "1.53 true noise levels at seed 0 (its floor 4.5 % high), HOLDOUT46's "
-                                         "bender behind a sampling laser sensor at 1.61 (its floor 9 % high)")
+                                         "1.53 true noise levels at seed 0 (its floor, from two holds, 4.5 % high)")
 def test_every_explained_verdict_within_the_true_noise(rows):
     over = [r for r in rows if r["explained_over_limit"]]
     assert not over, _over(over)
 
 
-@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 110/192 runs (35/64 at seed 0) of the combined "
-                                        "cases of the fifty-nine sets (creep under a clip, an initial state "
+@pytest.mark.xfail(strict=True, reason="issue 10 open: both effects named in 110/195 runs (35/65 at seed 0) of the combined "
+                                        "cases of the sixty sets (creep under a clip, an initial state "
                                         "with Cole-Davidson creep, HOLDOUT15's charge drive read as "
                                         "asymmetry alone, HOLDOUT16's bond layer read as creep, "
                                         "HOLDOUT19's calibration memory behind a delay read as the delay alone, "
@@ -376,8 +379,10 @@ def test_every_explained_verdict_within_the_true_noise(rows):
                                         "rate dependence at seed 2); HOLDOUT57's walls' micropores "
                                         "taking water slowly (creep) beside a two-stream generator's humidity linear "
                                         "in the drive (an asymmetry): a drift named in place of the creep at seed 1, "
-                                        "nothing named at seed 2 (round 59); "
-                                        "HOLDOUT46's pair, a drift "
+                                        "nothing named at seed 2 (round 59); HOLDOUT59's nylon pad's log creep "
+                                        "beside a gale's pressure on the interferometer's air path (a drift): the "
+                                        "drift named with a rate dependence in place of the creep at every seed "
+                                        "(round 61); HOLDOUT46's pair, a drift "
                                         "and a gain drift, is of one family and not among them)")
 def test_both_effects_named_in_combined_cases(rows):
     comb = [r for r in rows if r["combined"]]

@@ -1,14 +1,14 @@
 """Issue 10's acceptance on a sample of the realistic records, in the default suite.
 
-The full acceptance (``tests/test_diagnose_realistic.py``: every case of the fifty-nine sets at
+The full acceptance (``tests/test_diagnose_realistic.py``: every case of the sixty sets at
 seed 0, about 1,200 CPU-seconds) is marked ``slow`` and runs with ``pytest -m slow``; the
 benchmark ``benchmarks/eval_diagnose_realistic.py`` runs three seeds. This sample keeps the
 issue's criteria in every run of the suite (and CI) at a fourteenth of the cost: three whole sets,
 the three quickest to diagnose (HOLDOUT4, HOLDOUT9 and HOLDOUT14: 82 CPU-seconds at seed 0 in
 round 22, each with its clean, out-of-vocabulary and pair case), and the clean record of every
-other set (63 clean records in all, HOLDOUT33's and HOLDOUT42's left to the slow test since round 58, see
-SLOW_CLEAN; HOLDOUT58's took 2.4 s in round 60's measurement). 90 runs at seed 0; 81 were right in round 60, 80 in
-rounds 59 and 58, 79 in round 57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
+other set (64 clean records in all, HOLDOUT33's and HOLDOUT42's left to the slow test since round 58, see
+SLOW_CLEAN; HOLDOUT59's took 11.4 s in round 61's measurement). 91 runs at seed 0; 82 were right in round 61, 81 in
+round 60, 80 in rounds 59 and 58, 79 in round 57, 78 in rounds 56 and 55 (77 in round 54, 75 in round 53)
 (HOLDOUT9's unipolar generalized plays until round 36's rule on small later steps, HOLDOUT14's eddy-field separation and, since round 32's drift of
 events, HOLDOUT14's anhysteretic bias read as a drift, a near tie, were not; HOLDOUT21's
 clean record joined in round 24, HOLDOUT22's in round 25, HOLDOUT23's and HOLDOUT24's in round 26,
@@ -99,8 +99,8 @@ def rows():
 
 
 def test_the_sample(rows):
-    assert len(rows) == 90
-    assert sum(r["clean"] for r in rows) == 63
+    assert len(rows) == 91
+    assert sum(r["clean"] for r in rows) == 64
     assert sum(r["case"].startswith(SETS) for r in rows) == 30
     # outside the three sets, the sample is every set's clean record and nothing else
     assert all(r["clean"] for r in rows if not r["case"].startswith(SETS))
@@ -112,7 +112,8 @@ def test_no_crash(rows):
 
 
 def test_right_verdict_no_worse_than_measured(rows):
-    # 81/90 right in round 60 (HOLDOUT58's clean beam chip right at seed 0); 80/89 in round 59 (HOLDOUT57's clean
+    # 82/91 right in round 61 (HOLDOUT59's clean microgel film right at seed 0); 81/90 in round 60 (HOLDOUT58's
+    # clean beam chip right at seed 0); 80/89 in round 59 (HOLDOUT57's clean
     # Bragg mirror wrong at seed 0: unexplained, nothing named); 80/88 in
     # round 58 (HOLDOUT56's clean bimorph right at seed 0; HOLDOUT33's and HOLDOUT42's clean
     # records, wrong, left to the slow test, SLOW_CLEAN); 79/89 in round 57 (HOLDOUT55's clean unimorph right at seed 0); 78/88 in round 56 (HOLDOUT54's clean strip wrong at seed 0: a drift); 78/87 in round 55 (HOLDOUT53's clean cell right at seed 0; 77/86 in round 54, 75/85 in round 53; round 22's 52/54, one fewer since round 32, one more since round 36,
@@ -120,11 +121,11 @@ def test_right_verdict_no_worse_than_measured(rows):
     # HOLDOUT50's and HOLDOUT52's counted wrong; HOLDOUT49's and HOLDOUT51's right since round 54's rule on first
     # asymmetries;
     # HOLDOUT35's and HOLDOUT39's right since round 45's Preisach-type core, HOLDOUT36's and HOLDOUT40's since
-    # round 47's rule on small saturations of explained records); at least 78 (87 %):
+    # round 47's rule on small saturations of explained records); at least 79 (87 %):
     # three runs of margin for decisions that sit on a threshold and may fall
     # the other way on another machine's BLAS
     right = sum(r["right"] for r in rows)
-    assert right >= 78, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
+    assert right >= 79, f"{right}/{len(rows)} right\n" + _table([r for r in rows if not r["right"]])
 
 
 def test_no_effect_named_on_clean_records(rows):

@@ -1,5 +1,6 @@
-"""HOLDOUT59 (tests/realistic/cases_holdout59.py, laws in mechanisms59.py, signals in signals59.py): well formed, not
-yet measured and kept out of ALL, and every mechanism follows its law. Nothing here runs the diagnosis.
+"""HOLDOUT59 (tests/realistic/cases_holdout59.py, laws in mechanisms59.py, signals in signals59.py): well formed,
+measured once in round 61 (7e9d9ce, 20 of 30 runs right) and part of ALL since, and every mechanism follows its law.
+Nothing here runs the diagnosis.
 
 Tolerances: a record that is its stated law plus the sensor noise leaves a residual RMS within 1.5 sigma of the law (the
 noise alone gives 1.0; the laws are evaluated on the clean drive). A law checked against an independent solution (every
@@ -53,12 +54,11 @@ from scipy.optimize import brentq, isotonic_regression
 from scipy.special import ndtri
 
 import realistic
-from realistic import ALL, HOLDOUT59, family
+from realistic import HOLDOUT59
 from realistic import cases_holdout59 as c59
 from realistic import mechanisms59 as m59
 from realistic import signals59 as s59
-from test_realistic_generator import (_assert_drives_start_at_zero, _assert_set_layout, _assert_spans_and_rates,
-                                      _assert_well_formed, _linear_misfit, _rms)
+from test_realistic_generator import _assert_joined_ten, _linear_misfit, _rms
 from realistic.set_checks import assert_knots_evaluator as _knots_evaluator, assert_minimum_jerk as _minimum_jerk
 from realistic.set_checks import assert_relay_core as _relay_core, holds as _holds, pi_fit_rms as _pi_fit_rms
 from realistic.set_checks import never_still as _never_still
@@ -97,56 +97,12 @@ def _core_cached(name, seed):
     return m59.core_reading(e, e["drive"])
 
 
-def _assert_unmeasured_set(H, prefix, effects, rec):
-    """A set of ten cases not yet measured: none of them in ALL; names with the set's prefix; well-formed records of
-    three seeds (the output noise 0.2 % of the span) that differ in more than the noise; every verdict kind; the
-    expected labels `effects`; one clean and one out-of-vocabulary case; one pair, of two families; nothing beyond
-    pairs. `rec(short_name, seed)` gives a record. Returns the seed-0 records by name."""
-    assert not set(H) & set(ALL) and len(H) == 10
-    assert all(n.startswith(prefix) for n in H)
-    first = {}
-    for name in H:
-        recs = [rec(name[len(prefix):], s) for s in range(3)]
-        for r in recs:
-            _assert_well_formed(r, name)
-            assert r.noise_std == pytest.approx(0.002 * np.ptp(r.y), rel=0.05)
-        assert not np.array_equal(recs[0].y, recs[1].y) and not np.array_equal(recs[1].y, recs[2].y)
-        assert len(recs[0].v) != len(recs[1].v) or not np.allclose(recs[0].v, recs[1].v, atol=0.5)
-        first[name] = recs[0]
-    assert {r.expect_verdict for r in first.values()} == {"explained", "unexplained", "either"}
-    assert {e for r in first.values() for e in r.expect_effects} == effects
-    assert sum(not r.expect_effects and r.expect_verdict == "explained" for r in first.values()) == 1
-    assert sum(not r.expect_effects and r.expect_verdict == "unexplained" for r in first.values()) == 1
-    pairs = [r for r in first.values() if len(r.expect_effects) == 2]
-    assert len(pairs) == 1 and len(family(pairs[0].expect_effects)) == 2
-    assert all(len(r.expect_effects) <= 2 for r in first.values())
-    return first
-
-
 # ---- the set ----
 
-def test_holdout59_is_well_formed_and_unmeasured():
+def test_holdout59_is_well_formed_and_joined():
     H = HOLDOUT59
     assert c59.HOLDOUT59 is H and realistic.HOLDOUT59 is H and "HOLDOUT59" in realistic.__all__
-    first = _assert_unmeasured_set(H, P, EFFECTS, _rec)
-    assert [n[len(P):].startswith(k) for n, k in zip(H, ORDER)] == [True] * 10
-    _assert_set_layout(H, P, first, _rec, MONITORED, others_carry_drive=True)
-    assert len(family(EFFECTS)) == 7
-    pair = first[P + PAIR]
-    assert pair.expect_effects == {"creep", "drift"} and pair.expect_verdict == "either"
-    assert first[P + CLEAN].expect_verdict == "explained"
-    assert first[P + OOV].expect_verdict == "unexplained"
-    _assert_spans_and_rates(H, P, first, _rec, UNIPOLAR)
-    # every drive starts at 0 V, the initial-state case's too (its film starts elsewhere, not its drive)
-    _assert_drives_start_at_zero(H, P, _rec)
-    # deterministic per seed: a case called again gives the same record
-    again = HOLDOUT59[P + ASYM](1)
-    np.testing.assert_array_equal(again.y, _rec(ASYM, 1).y)
-    np.testing.assert_array_equal(again.v, _rec(ASYM, 1).v)
-    # every drive back at 0 V at its end (within 0.05 V: a never-still programme's last move lands as the record ends)
-    for name in H:
-        for s in range(3):
-            assert abs(_rec(name[len(P):], s).extra["drive"][-1]) < 0.05
+    _assert_joined_ten(H, P, EFFECTS, ORDER, _rec, MONITORED, UNIPOLAR, PAIR, {"creep", "drift"}, ASYM)
 
 
 def test_reach_and_programmes():
