@@ -89,3 +89,13 @@ def test_on_a_seen_record_the_final_floor_decides_the_verdict():
     assert "x the noise floor measured on the final model's residual" in rep.remaining["held_out"]
     d = json.loads(json.dumps(rep.to_dict()))
     assert d["noise_floor_method"]["final_high_frequency"] == pytest.approx(final)
+    # the gap figure's panel of the final model gives both ratios, the search's floor's and the verdict's
+    import matplotlib.pyplot as plt
+
+    figs = rep.plots()
+    titles = [a.get_title() for a in figs["gap"].axes]
+    said = [t.replace("\n", " ") for t in titles if "verdict's floor" in t]
+    assert len(said) == 1 and said[0].startswith("final:"), titles
+    assert f"{rep.rms_heldout / final:.2f} of the verdict's floor, {final:.3g}, from its own residual" in said[0]
+    for fig in figs.values():
+        plt.close(fig)

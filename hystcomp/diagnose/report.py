@@ -708,6 +708,8 @@ class Diagnosis:
             labels.append(f"final: {self._final_name()} (after revision)")
         if finer is not None:
             labels.append(f"final: {self._final_name()} with {finer['plays']} plays (the finer core)")
+        last = len(preds) - 1     # the search's final model (a KP core's panel may follow)
+        fh = self.noise_info.get("final_high_frequency")   # the verdict's floor, when lower (round 61)
         pc, kp = self.preisach_core, getattr(self, "_kp_pred", None)
         if pc is not None and kp is not None:
             # the rate-independent core of the Preisach type alone: evidence, or the model when taken
@@ -722,7 +724,7 @@ class Diagnosis:
         ax = np.atleast_1d(ax)
         # robust limits (isolated spikes, e.g. at a voltage step, do not squash the rest)
         ylim = max(4.0 * s, 1.3 * float(np.percentile(np.abs(rec.y - preds[0]), 99.5))) or 1.0
-        for a, p, lab in zip(ax, preds, labels):
+        for i, (a, p, lab) in enumerate(zip(ax, preds, labels)):
             e = rec.output_sign * (rec.y - p)
             rms = float(np.sqrt(np.mean(e[~rec.train] ** 2)))
             a.plot(xax[idx], e[idx], lw=0.6)
@@ -732,7 +734,10 @@ class Diagnosis:
             _mark_held_out(a, xax, rec)
             a.set_ylim(-ylim, ylim)
             a.set_ylabel(y_res)
-            a.set_title(f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors", fontsize=9)
+            on_final = (f"; {rms / fh:.2f} of the verdict's floor, {fh:.3g}, from its own residual"
+                        if fh and i == last else "")
+            head = f"{lab}: held-out RMS {rms:.3g} = {rms / s:.2f} noise floors"
+            a.set_title(textwrap.fill(head + on_final, 150) if on_final else head, fontsize=9)
         ax[-1].set_xlabel(xlabel + " (green: noise floor +-sigma, dotted: 1.5 sigma; dashed, orange: held-out part)")
         title = f"verdict: {self.verdict}; stopped: {self.stopped}"
         title += "".join(". Caution: " + c for c in self._cautions(short=True))
