@@ -1,6 +1,7 @@
 """The floor an "explained" verdict is judged against: the high-frequency
 part again on the final model's residual, when lower
-(hystcomp.diagnose.noise.final_residual_floor, round 61).
+(hystcomp.diagnose.noise.final_residual_floor, round 61).  The test on HOLDOUT46's record is slow
+(``pytest -m slow``); the others run in the default suite.
 
 The base model's residual carries a missed effect's fast structure, and its
 median absolute second difference reads part of it as noise: HOLDOUT46's
@@ -71,6 +72,9 @@ def test_the_resolution_bounds_the_final_floor():
     assert floor == pytest.approx(1e-5 * rec.y_span)
 
 
+# 24 s in the default suite (round 61), whose CI time is near its bound; the slow acceptance
+# (tests/test_diagnose_realistic.py, OVER_KNOWN) also holds this record at seed 0 to 1.5 true noise levels
+@pytest.mark.slow
 def test_on_a_seen_record_the_final_floor_decides_the_verdict():
     from realistic import HOLDOUT46
 
